@@ -1,0 +1,125 @@
+#include "cli_options.hpp"
+#include "commands.hpp"
+#include "output_file.hpp"
+#include "result_json.hpp"
+
+#include "sinew/bench/reference_check.hpp"
+#include "sinew/core/input_error.hpp"
+#include "sinew/problems/builtin_problems.hpp"
+#include "sinew/solvers/solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+namespace sinew::cli {
+namespace {
+
+std::string format(const char* pattern, double value)
+{
+    if (!std::isfinite(value))
+        return "-";
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, pattern, value);
+    return buffer;
+}
+
+bool contains(const std::vector<std::string>& list, const std::string& name)
+{
+    return list.empty() || std::find(list.begin(), list.end(), name) != list.end();
+}
+
+} // namespace
+
+void add_bench_command(CLI::App& app, int& exit_code)
+{
+    CLI::App* command = app.add_subcommand(
+        "bench", "run every built-in problem of a suite with every solver that accepts it and print a markdown "
+                 "table; exit 0 when every run reached the published optimum f* (feasible, at f*, stopped on its own "
+                 "criterion; converged where there is no f*), 3 otherwise");
+    struct Flags {
+        std::string suite = "all";
+        std::vector<std::string> solvers;
+        std::vector<std::string> problems;
+        std::string json;
+        ReferenceTolerances reference;
+        SolverFlags solver_flags;
+    };
+    auto flags = std::make_shared<Flags>();
+    command->add_option("--suite", flags->suite, "suite name (see sinew list), or all")->capture_default_str();
+    command->add_option("--solver", flags->solvers, "only these solvers (repeatable)");
+    command->add_option("--problem", flags->problems, "only these problems (repeatable)");
+    command->add_option("--json", flags->json, "write every run's full result to this file");
+    command->add_option("--optimum-tol", flags->reference.objective,
+                        "largest |f - f*| / max(1, |f*|) counted as reaching the published optimum f*")
+        ->capture_default_str();
+    command->add_option("--feasibility-tol", flags->reference.feasibility,
+                        "largest constraint violation counted as reaching f*")
+        ->capture_default_str();
+    add_solver_flags(*command, flags->solver_flags);
+
+    command->callback([flags, &exit_code] {
+        const SolverOptions options = to_solver_options(flags->solver_flags);
+        if (!flags->json.empty())
+            write_text_file(flags->json, "");  // fail on a bad path before the solve, not after
+        const auto suites = builtin_suites();
+        if (flags->suite != "all" && std::find(suites.begin(), suites.end(), flags->suite) == suites.end()) {
+            std::string valid = "all";
+            for (const auto& s : suites)
+                valid += ", " + s;
+            throw InputError("unknown suite '" + flags->suite + "'; valid suites: " + valid);
+        }
+        for (const auto& name : flags->solvers)
+            find_solver(name);
+        for (const auto& name : flags->problems)
+            find_builtin_problem(name);
+
+        std::cout << "| problem | solver | status | iterations | objective | f* rel. error | constraint violation "
+                     "| KKT residual | time (s) | reached f* |\n"
+                  << "|---|---|---|---:|---:|---:|---:|---:|---:|---|\n";
+        nlohmann::json runs = nlohmann::json::array();
+        std::vector<std::string> skipped;
+        bool all_good = true;
+        for (const auto& problem : builtin_problems()) {
+            if ((flags->suite != "all" && problem.suite != flags->suite) || !contains(flags->problems, problem.name))
+                continue;
+            for (const auto& solver : all_solvers()) {
+                if (!contains(flags->solvers, solver->name()))
+                    continue;
+                const std::unique_ptr<Nlp> nlp = problem.make();
+                if (const auto why = solver->refusal(*nlp)) {
+                    skipped.push_back(problem.name + " × " + solver->name() + ": " + *why);
+                    continue;
+                }
+                const Result result = solve(*nlp, solver->name(), options);
+                const double error = optimum_error(problem, result);
+                const bool good = reaches_reference(problem, result, flags->reference);
+                all_good = all_good && good;
+                std::cout << "| " << problem.name << " | " << solver->name() << " | " << to_string(result.status) << " | "
+                          << result.iterations << " | " << format("%.10g", result.objective) << " | "
+                          << format("%.1e", error) << " | " << format("%.1e", result.constraint_violation) << " | "
+                          << format("%.1e", result.kkt_residual) << " | " << format("%.4f", result.time_s) << " | "
+                          << (good ? "yes" : "no") << " |"
+                          << std::endl;
+                nlohmann::json run = to_json(result);
+                run["suite"] = problem.suite;
+                run["reference_objective"] =
+                    problem.reference_objective ? number(*problem.reference_objective) : nlohmann::json();
+                run["optimum_relative_error"] = number(error);
+                run["reached_reference"] = good;
+                runs.push_back(run);
+            }
+        }
+        for (const auto& line : skipped)
+            std::cout << "\nnot applicable: " << line;
+        if (!skipped.empty())
+            std::cout << "\n";
+        if (!flags->json.empty())
+            write_text_file(flags->json, nlohmann::json{{"suite", flags->suite}, {"runs", runs}}.dump(2) + "\n");
+        exit_code = all_good ? 0 : 3;
+    });
+}
+
+} // namespace sinew::cli

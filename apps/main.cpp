@@ -1,0 +1,50 @@
+// sinew: the command line. Exit codes (DESIGN.md): 0 converged, 1 internal
+// error, 2 bad input, 3 not converged.
+#include "commands.hpp"
+
+#include "sinew/core/input_error.hpp"
+
+#include <exception>
+#include <iostream>
+#include <string>
+
+int main(int argc, char** argv)
+{
+    CLI::App app{"sinew: mechanics of muscle, soft tissue and fibrous materials as nonlinear programs"};
+    app.require_subcommand(1);
+    app.failure_message([](const CLI::App*, const CLI::Error& e) { return std::string(e.what()) + "\n"; });
+    int exit_code = 0;
+    sinew::cli::add_list_command(app, exit_code);
+    sinew::cli::add_solve_command(app, exit_code);
+    sinew::cli::add_check_command(app, exit_code);
+    sinew::cli::add_bench_command(app, exit_code);
+    if (argc > 1 && argv[1][0] != '-') {
+        std::string valid;
+        bool known = false;
+        for (const CLI::App* command : app.get_subcommands({})) {
+            valid += (valid.empty() ? "" : ", ") + command->get_name();
+            known = known || command->get_name() == argv[1];
+        }
+        if (!known) {
+            std::cerr << "sinew: unknown command '" << argv[1] << "'; valid commands: " << valid << "\n";
+            return 2;
+        }
+    }
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "sinew: " << e.what() << " (see sinew --help)\n";
+        return 2;
+    } catch (const sinew::InputError& e) {
+        std::cerr << "sinew: " << e.what() << "\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "sinew: internal error: " << e.what() << "\n";
+        return 1;
+    }
+    return exit_code;
+}

@@ -1,0 +1,44 @@
+#pragma once
+#include "sinew/problems/nlp.hpp"
+
+#include <string>
+
+namespace sinew {
+
+/// The worst disagreement found in one derivative (gradient, Jacobian or
+/// Hessian) between the analytic values and central finite differences.
+struct DerivativeDiscrepancy {
+    double worst_relative_error = 0.0;  ///< |analytic - fd| / max(1, |fd|)
+    int row = -1;                       ///< where it is (-1: nothing compared)
+    int col = -1;                       ///< column; 0 for the gradient
+    double analytic = 0.0;
+    double finite_difference = 0.0;
+    int entries_compared = 0;
+};
+
+struct DerivativeCheckReport {
+    DerivativeDiscrepancy gradient;  ///< ∇f, row = variable index
+    DerivativeDiscrepancy jacobian;  ///< ∂c/∂x, (constraint, variable)
+    DerivativeDiscrepancy hessian;   ///< ∇²L lower triangle, (row >= col)
+    /// A pattern entry outside the matrix or (Hessian) above the diagonal;
+    /// when set nothing else was compared.
+    std::string pattern_problem;
+    /// Entries the Hessian pattern lacks but finite differences find nonzero
+    /// (beyond tolerance) are counted in `hessian` too, so a missing entry shows.
+    bool passed(double tolerance) const;
+    std::string to_text() const;  ///< a short human-readable report
+};
+
+struct DerivativeCheckOptions {
+    double step = 1e-6;      ///< central-difference step, scaled by max(1, |x_i|)
+    double sigma = 1.0;      ///< objective factor in ∇²L
+    unsigned seed = 7;       ///< for the random multipliers λ in ∇²L
+};
+
+/// Compares gradient, Jacobian and Hessian of the Lagrangian (with random λ)
+/// at x against central differences of f, c and ∇L. Dense in n, so meant for
+/// problems up to a few thousand variables.
+DerivativeCheckReport check_derivatives(Nlp& nlp, Nlp::ConstVectorRef x,
+                                        const DerivativeCheckOptions& options = {});
+
+} // namespace sinew

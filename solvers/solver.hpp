@@ -1,0 +1,39 @@
+#pragma once
+#include "sinew/problems/nlp.hpp"
+#include "sinew/solvers/result.hpp"
+#include "sinew/solvers/solver_options.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sinew {
+
+/// A strategy that solves an Nlp. Implementations know nothing of physics.
+class Solver {
+public:
+    virtual ~Solver() = default;
+    virtual std::string name() const = 0;
+    virtual std::string description() const = 0;
+    /// Why this solver cannot handle `nlp` (e.g. "LBFGS does not take
+    /// constraints"), or nothing when it can.
+    virtual std::optional<std::string> refusal(const Nlp& nlp) const = 0;
+    /// Runs the solve. Does not throw for a solve that fails to converge: the
+    /// status says so. Throws InputError for invalid options.
+    virtual Result run(Nlp& nlp, const SolverOptions& options) const = 0;
+};
+
+/// Every solver sinew has, in a fixed order.
+const std::vector<std::unique_ptr<Solver>>& all_solvers();
+
+/// The solver called `name`; InputError listing the valid names otherwise.
+const Solver& find_solver(const std::string& name);
+
+/// Solves `nlp` with the named solver: refuses (InputError) a problem of a kind
+/// the solver cannot handle, then measures the result uniformly — objective,
+/// constraint violation, KKT residual (estimating multipliers when the backend
+/// gives none) — and reports converged only when every tolerance holds.
+Result solve(Nlp& nlp, const std::string& solver, const SolverOptions& options);
+
+} // namespace sinew

@@ -1,0 +1,37 @@
+#pragma once
+#include <iosfwd>
+#include <map>
+#include <string>
+
+namespace sinew {
+
+/// Options common to every solver, plus backend options by name.
+///
+/// A solve is "converged" when the backend stopped on its own success
+/// criterion and, measured afterwards at the returned x,
+///   max constraint violation <= constraint_tolerance  and
+///   KKT residual <= kkt_tolerance · max(1, ‖∇f(x)‖∞).
+struct SolverOptions {
+    /// The backend's own stopping tolerance (Ipopt `tol`, NLopt ftol_rel and
+    /// xtol_rel, Newton's relative gradient norm).
+    double tolerance = 1e-8;
+    /// Largest constraint violation accepted as feasible (absolute).
+    double constraint_tolerance = 1e-6;
+    /// Largest KKT residual accepted as optimal, relative to max(1, ‖∇f‖∞).
+    double kkt_tolerance = 1e-6;
+    /// Iterations (Ipopt, Newton) or evaluations of f and ∇f (NLopt).
+    int max_iterations = 3000;
+    /// 0 silent, 1 one table row per iteration, 2 and more backend chatter.
+    int verbosity = 0;
+    /// Where the table goes; standard output when null.
+    std::ostream* log = nullptr;
+    /// Options passed through by name to the backend (Ipopt options, NLopt
+    /// settings). Values are text; the backend parses and checks them.
+    std::map<std::string, std::string> backend;
+};
+
+/// Throws InputError naming the first invalid common option (non-positive
+/// tolerance or iteration limit).
+void validate(const SolverOptions& options);
+
+} // namespace sinew

@@ -1,0 +1,172 @@
+// The sinew command line, run as a user runs it: exit codes, one-line errors,
+// and the result file.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+
+struct Run {
+    int exit_code = -1;
+    std::string out;  ///< standard output
+    std::string err;  ///< standard error
+};
+
+std::string slurp(const std::string& path)
+{
+    std::ifstream in(path);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// Runs `sinew <arguments>` in a scratch folder and captures both streams.
+Run sinew(const std::string& arguments)
+{
+    const auto dir = std::filesystem::temp_directory_path() / "sinew_cli_tests";
+    std::filesystem::create_directories(dir);
+    const std::string out = (dir / "stdout.txt").string(), err = (dir / "stderr.txt").string();
+    const std::string command =
+        "cd '" + dir.string() + "' && '" SINEW_EXECUTABLE "' " + arguments + " >'" + out + "' 2>'" + err + "'";
+    const int status = std::system(command.c_str());
+    Run run;
+    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    run.out = slurp(out);
+    run.err = slurp(err);
+    return run;
+}
+
+std::string scratch(const std::string& name)
+{
+    return (std::filesystem::temp_directory_path() / "sinew_cli_tests" / name).string();
+}
+
+int lines(const std::string& text)
+{
+    int count = 0;
+    for (char c : text)
+        count += c == '\n';
+    return count;
+}
+
+nlohmann::json read_json(const std::string& path)
+{
+    std::ifstream in(path);
+    REQUIRE(in.good());
+    return nlohmann::json::parse(in);
+}
+
+} // namespace
+
+TEST_CASE("sinew solve hs071 writes a converged result at f* with ipopt and nlopt-slsqp")
+{
+    const std::string solver = GENERATE("ipopt", "nlopt-slsqp");
+    const std::string path = scratch("r_" + solver + ".json");
+    std::filesystem::remove(path);
+    const Run run = sinew("solve hs071 --solver " + solver + " --json '" + path + "'");
+    CAPTURE(run.out, run.err);
+    REQUIRE(run.exit_code == 0);
+    const auto r = read_json(path);
+    for (const char* key : {"status", "x", "objective", "constraint_violation", "kkt_residual", "iterations", "time_s",
+                            "history"})
+        CHECK(r.contains(key));
+    CHECK(r["status"] == "converged");
+    CHECK(std::abs(r["objective"].get<double>() - 17.0140173) / 17.0140173 < 1e-6);
+    CHECK(r["x"].size() == 4);
+    CHECK(r["history"].size() >= 2);
+    CHECK(r["history"][0].contains("objective"));
+    // verbosity 1 (the default) prints the iteration table.
+    CHECK(run.out.find("iter") != std::string::npos);
+}
+
+TEST_CASE("sinew solve is silent at verbosity 0")
+{
+    const Run run = sinew("solve hs071 --solver ipopt --verbosity 0");
+    CHECK(run.exit_code == 0);
+    CHECK(run.out.empty());
+    CHECK(run.err.empty());
+}
+
+TEST_CASE("a solve that does not converge still writes its result and exits 3")
+{
+    const std::string path = scratch("r_limit.json");
+    std::filesystem::remove(path);
+    const Run run = sinew("solve hs071 --solver ipopt --max-iter 2 --json '" + path + "'");
+    CHECK(run.exit_code == 3);
+    const auto r = read_json(path);
+    CHECK(r["status"] == "max_iterations");
+    CHECK(r["x"].size() == 4);
+}
+
+TEST_CASE("bad command-line input gives one clear line and exit code 2")
+{
+    struct Case {
+        const char* arguments;
+        const char* expected;  ///< a piece of the one-line message
+    };
+    const Case c = GENERATE(Case{"solve hs071 --solver snopt", "valid solvers"},
+                            Case{"solve hs999 --solver ipopt", "valid problems"},
+                            Case{"solve hs071 --solver ipopt --option tol", "key=value"},
+                            Case{"solve hs071 --solver ipopt --option =3", "key=value"},
+                            Case{"solve hs071 --solver ipopt --option no_such_option=1", "no_such_option"},
+                            Case{"solve hs071 --solver ipopt --json /no/such/folder/r.json", "/no/such/folder/r.json"},
+                            Case{"solve hs071 --solver ipopt --tol abc", "--tol"},
+                            Case{"solve hs071 --solver ipopt --tol -1", "tol"},
+                            Case{"solve hs071 --solver nlopt-lbfgs", "nlopt-lbfgs"},
+                            Case{"solve hs071 --frobnicate", "frobnicate"},
+                            Case{"check hs999", "valid problems"},
+                            Case{"bench --suite nope", "valid suites"},
+                            Case{"bench --suite classic --json /no/such/folder/b.json", "/no/such/folder/b.json"},
+                            Case{"teleport", "teleport"});
+    const Run run = sinew(c.arguments);
+    CAPTURE(c.arguments, run.out, run.err);
+    CHECK(run.exit_code == 2);
+    CHECK(lines(run.err) == 1);
+    CHECK(run.err.find(c.expected) != std::string::npos);
+    CHECK(run.err.rfind("sinew: ", 0) == 0);
+}
+
+TEST_CASE("sinew list names the problems and the solvers")
+{
+    const Run run = sinew("list");
+    CHECK(run.exit_code == 0);
+    for (const char* name : {"hs071", "rosenbrock1000", "ipopt", "nlopt-slsqp", "nlopt-mma", "nlopt-ccsaq",
+                             "nlopt-lbfgs", "nlopt-auglag"})
+        CHECK(run.out.find(name) != std::string::npos);
+}
+
+TEST_CASE("sinew check passes on a built-in problem")
+{
+    const Run run = sinew("check hs071 --perturb 0.1");
+    CAPTURE(run.out, run.err);
+    CHECK(run.exit_code == 0);
+    CHECK(run.out.find("hessian") != std::string::npos);
+    CHECK(run.out.find("passed") != std::string::npos);
+}
+
+TEST_CASE("sinew bench prints a markdown table and a JSON file")
+{
+    const std::string path = scratch("bench.json");
+    const Run run = sinew("bench --suite classic --solver ipopt --problem hs071 --problem rosenbrock2 --json '" + path + "'");
+    CAPTURE(run.out, run.err);
+    CHECK(run.exit_code == 0);
+    CHECK(run.out.find("| problem | solver | status |") != std::string::npos);
+    CHECK(run.out.find("| hs071 | ipopt | converged |") != std::string::npos);
+    const auto b = read_json(path);
+    REQUIRE(b["runs"].size() == 2);
+    CHECK(b["runs"][0]["reached_reference"] == true);
+}
+
+TEST_CASE("every subcommand has --help")
+{
+    for (const char* command : {"", "list", "solve", "check", "bench"}) {
+        const Run run = sinew(std::string(command) + " --help");
+        CAPTURE(command);
+        CHECK(run.exit_code == 0);
+        CHECK(run.out.find("Usage") != std::string::npos);
+    }
+}
