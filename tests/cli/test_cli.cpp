@@ -1,73 +1,17 @@
 // The sinew command line, run as a user runs it: exit codes, one-line errors,
 // and the result file.
+#include "run_sinew.hpp"
+
 #include <catch2/catch.hpp>
-#include <nlohmann/json.hpp>
 
-#include <array>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <string>
-#include <sys/wait.h>
-
-namespace {
-
-struct Run {
-    int exit_code = -1;
-    std::string out;  ///< standard output
-    std::string err;  ///< standard error
-};
-
-std::string slurp(const std::string& path)
-{
-    std::ifstream in(path);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-/// Runs `sinew <arguments>` in a scratch folder and captures both streams.
-Run sinew(const std::string& arguments)
-{
-    const auto dir = std::filesystem::temp_directory_path() / "sinew_cli_tests";
-    std::filesystem::create_directories(dir);
-    const std::string out = (dir / "stdout.txt").string(), err = (dir / "stderr.txt").string();
-    const std::string command =
-        "cd '" + dir.string() + "' && '" SINEW_EXECUTABLE "' " + arguments + " >'" + out + "' 2>'" + err + "'";
-    const int status = std::system(command.c_str());
-    Run run;
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.out = slurp(out);
-    run.err = slurp(err);
-    return run;
-}
-
-std::string scratch(const std::string& name)
-{
-    return (std::filesystem::temp_directory_path() / "sinew_cli_tests" / name).string();
-}
-
-int lines(const std::string& text)
-{
-    int count = 0;
-    for (char c : text)
-        count += c == '\n';
-    return count;
-}
-
-nlohmann::json read_json(const std::string& path)
-{
-    std::ifstream in(path);
-    REQUIRE(in.good());
-    return nlohmann::json::parse(in);
-}
-
-} // namespace
+using namespace sinew::test;
 
 TEST_CASE("sinew solve hs071 writes a converged result at f* with ipopt and nlopt-slsqp")
 {
     const std::string solver = GENERATE("ipopt", "nlopt-slsqp");
     const std::string path = scratch("r_" + solver + ".json");
     std::filesystem::remove(path);
-    const Run run = sinew("solve hs071 --solver " + solver + " --json '" + path + "'");
+    const Run run = run_sinew("solve hs071 --solver " + solver + " --json '" + path + "'");
     CAPTURE(run.out, run.err);
     REQUIRE(run.exit_code == 0);
     const auto r = read_json(path);
@@ -85,7 +29,7 @@ TEST_CASE("sinew solve hs071 writes a converged result at f* with ipopt and nlop
 
 TEST_CASE("sinew solve is silent at verbosity 0")
 {
-    const Run run = sinew("solve hs071 --solver ipopt --verbosity 0");
+    const Run run = run_sinew("solve hs071 --solver ipopt --verbosity 0");
     CHECK(run.exit_code == 0);
     CHECK(run.out.empty());
     CHECK(run.err.empty());
@@ -95,7 +39,7 @@ TEST_CASE("a solve that does not converge still writes its result and exits 3")
 {
     const std::string path = scratch("r_limit.json");
     std::filesystem::remove(path);
-    const Run run = sinew("solve hs071 --solver ipopt --max-iter 2 --json '" + path + "'");
+    const Run run = run_sinew("solve hs071 --solver ipopt --max-iter 2 --json '" + path + "'");
     CHECK(run.exit_code == 3);
     const auto r = read_json(path);
     CHECK(r["status"] == "max_iterations");
@@ -122,7 +66,7 @@ TEST_CASE("bad command-line input gives one clear line and exit code 2")
                             Case{"bench --suite nope", "valid suites"},
                             Case{"bench --suite classic --json /no/such/folder/b.json", "/no/such/folder/b.json"},
                             Case{"teleport", "teleport"});
-    const Run run = sinew(c.arguments);
+    const Run run = run_sinew(c.arguments);
     CAPTURE(c.arguments, run.out, run.err);
     CHECK(run.exit_code == 2);
     CHECK(lines(run.err) == 1);
@@ -132,7 +76,7 @@ TEST_CASE("bad command-line input gives one clear line and exit code 2")
 
 TEST_CASE("sinew list names the problems and the solvers")
 {
-    const Run run = sinew("list");
+    const Run run = run_sinew("list");
     CHECK(run.exit_code == 0);
     for (const char* name : {"hs071", "rosenbrock1000", "ipopt", "nlopt-slsqp", "nlopt-mma", "nlopt-ccsaq",
                              "nlopt-lbfgs", "nlopt-auglag"})
@@ -141,7 +85,7 @@ TEST_CASE("sinew list names the problems and the solvers")
 
 TEST_CASE("sinew check passes on a built-in problem")
 {
-    const Run run = sinew("check hs071 --perturb 0.1");
+    const Run run = run_sinew("check hs071 --perturb 0.1");
     CAPTURE(run.out, run.err);
     CHECK(run.exit_code == 0);
     CHECK(run.out.find("hessian") != std::string::npos);
@@ -151,7 +95,7 @@ TEST_CASE("sinew check passes on a built-in problem")
 TEST_CASE("sinew bench prints a markdown table and a JSON file")
 {
     const std::string path = scratch("bench.json");
-    const Run run = sinew("bench --suite classic --solver ipopt --problem hs071 --problem rosenbrock2 --json '" + path + "'");
+    const Run run = run_sinew("bench --suite classic --solver ipopt --problem hs071 --problem rosenbrock2 --json '" + path + "'");
     CAPTURE(run.out, run.err);
     CHECK(run.exit_code == 0);
     CHECK(run.out.find("| problem | solver | status |") != std::string::npos);
@@ -164,7 +108,7 @@ TEST_CASE("sinew bench prints a markdown table and a JSON file")
 TEST_CASE("every subcommand has --help")
 {
     for (const char* command : {"", "list", "solve", "check", "bench"}) {
-        const Run run = sinew(std::string(command) + " --help");
+        const Run run = run_sinew(std::string(command) + " --help");
         CAPTURE(command);
         CHECK(run.exit_code == 0);
         CHECK(run.out.find("Usage") != std::string::npos);

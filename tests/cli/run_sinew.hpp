@@ -1,0 +1,70 @@
+#pragma once
+// Runs the sinew executable as a user does and captures exit code and output.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace sinew::test {
+
+struct Run {
+    int exit_code = -1;
+    std::string out;  ///< standard output
+    std::string err;  ///< standard error
+};
+
+inline std::string slurp(const std::string& path)
+{
+    std::ifstream in(path);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// Runs `sinew <arguments>` in a scratch folder and captures both streams.
+inline Run run_sinew(const std::string& arguments)
+{
+    const auto dir = std::filesystem::temp_directory_path() / "sinew_cli_tests";
+    std::filesystem::create_directories(dir);
+    // ctest runs test cases in parallel processes: one pair of files per call.
+    static int calls = 0;
+    const std::string tag = std::to_string(::getpid()) + "_" + std::to_string(++calls);
+    const std::string out = (dir / ("stdout_" + tag + ".txt")).string();
+    const std::string err = (dir / ("stderr_" + tag + ".txt")).string();
+    const std::string command =
+        "cd '" + dir.string() + "' && '" SINEW_EXECUTABLE "' " + arguments + " >'" + out + "' 2>'" + err + "'";
+    const int status = std::system(command.c_str());
+    Run run;
+    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    run.out = slurp(out);
+    run.err = slurp(err);
+    std::filesystem::remove(out);
+    std::filesystem::remove(err);
+    return run;
+}
+
+inline std::string scratch(const std::string& name)
+{
+    return (std::filesystem::temp_directory_path() / "sinew_cli_tests" / name).string();
+}
+
+inline int lines(const std::string& text)
+{
+    int count = 0;
+    for (char c : text)
+        count += c == '\n';
+    return count;
+}
+
+inline nlohmann::json read_json(const std::string& path)
+{
+    std::ifstream in(path);
+    REQUIRE(in.good());
+    return nlohmann::json::parse(in);
+}
+
+} // namespace sinew::test
