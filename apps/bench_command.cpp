@@ -3,6 +3,7 @@
 #include "output_file.hpp"
 #include "result_json.hpp"
 
+#include "sinew/bench/kernel_benchmark.hpp"
 #include "sinew/bench/reference_check.hpp"
 #include "sinew/core/input_error.hpp"
 #include "sinew/problems/builtin_problems.hpp"
@@ -16,6 +17,19 @@
 
 namespace sinew::cli {
 namespace {
+
+/// The suite of constitutive-model throughput runs, beside the NLP suites.
+const char* const kKernelSuite = "kernels";
+
+struct BenchFlags {
+    std::string suite = "all";
+    std::vector<std::string> solvers;
+    std::vector<std::string> problems;
+    std::string json;
+    ReferenceTolerances reference;
+    long kernel_evaluations = 1000000;
+    SolverFlags solver_flags;
+};
 
 std::string format(const char* pattern, double value)
 {
@@ -31,24 +45,80 @@ bool contains(const std::vector<std::string>& list, const std::string& name)
     return list.empty() || std::find(list.begin(), list.end(), name) != list.end();
 }
 
+/// Every built-in problem of the chosen suite × every solver that accepts it,
+/// as a markdown table; true when every run reached its reference.
+bool run_problems(const BenchFlags& flags, const SolverOptions& options, nlohmann::json& runs)
+{
+    std::cout << "| problem | solver | status | iterations | objective | f* rel. error | constraint violation "
+                 "| KKT residual | time (s) | reached f* |\n"
+              << "|---|---|---|---:|---:|---:|---:|---:|---:|---|\n";
+    std::vector<std::string> skipped;
+    bool all_good = true;
+    for (const auto& problem : builtin_problems()) {
+        if ((flags.suite != "all" && problem.suite != flags.suite) || !contains(flags.problems, problem.name))
+            continue;
+        for (const auto& solver : all_solvers()) {
+            if (!contains(flags.solvers, solver->name()))
+                continue;
+            const std::unique_ptr<Nlp> nlp = problem.make();
+            if (const auto why = solver->refusal(*nlp)) {
+                skipped.push_back(problem.name + " × " + solver->name() + ": " + *why);
+                continue;
+            }
+            const Result result = solve(*nlp, solver->name(), options);
+            const double error = optimum_error(problem, result);
+            const bool good = reaches_reference(problem, result, flags.reference);
+            all_good = all_good && good;
+            std::cout << "| " << problem.name << " | " << solver->name() << " | " << to_string(result.status)
+                      << " | " << result.iterations << " | " << format("%.10g", result.objective) << " | "
+                      << format("%.1e", error) << " | " << format("%.1e", result.constraint_violation) << " | "
+                      << format("%.1e", result.kkt_residual) << " | " << format("%.4f", result.time_s) << " | "
+                      << (good ? "yes" : "no") << " |" << std::endl;
+            nlohmann::json run = to_json(result);
+            run["suite"] = problem.suite;
+            run["reference_objective"] =
+                problem.reference_objective ? number(*problem.reference_objective) : nlohmann::json();
+            run["optimum_relative_error"] = number(error);
+            run["reached_reference"] = good;
+            runs.push_back(run);
+        }
+    }
+    if (!skipped.empty())
+        std::cout << "\n";
+    for (const auto& line : skipped)
+        std::cout << "- not applicable: " << line << "\n";
+    return all_good;
+}
+
+/// Throughput of every constitutive model, as a markdown table.
+void run_kernels(const BenchFlags& flags, nlohmann::json& kernels)
+{
+    std::cout << "\n| model | F | evaluations | time (s) | evaluations/s (psi + P + projected dP/dF, one core) |\n"
+              << "|---|---|---:|---:|---:|\n";
+    for (const KernelRun& run : run_kernel_benchmarks(flags.kernel_evaluations, 2026)) {
+        std::cout << "| " << run.model << " | " << run.shape << " | " << run.evaluations << " | "
+                  << format("%.3f", run.time_s) << " | " << format("%.3g", run.evaluations_per_second) << " |"
+                  << std::endl;
+        kernels.push_back({{"model", run.model},
+                           {"shape", run.shape},
+                           {"evaluations", run.evaluations},
+                           {"time_s", number(run.time_s)},
+                           {"evaluations_per_second", number(run.evaluations_per_second)}});
+    }
+}
+
 } // namespace
 
 void add_bench_command(CLI::App& app, int& exit_code)
 {
     CLI::App* command = app.add_subcommand(
         "bench", "run every built-in problem of a suite with every solver that accepts it and print a markdown "
-                 "table; exit 0 when every run reached the published optimum f* (feasible, at f*, stopped on its own "
-                 "criterion; converged where there is no f*), 3 otherwise");
-    struct Flags {
-        std::string suite = "all";
-        std::vector<std::string> solvers;
-        std::vector<std::string> problems;
-        std::string json;
-        ReferenceTolerances reference;
-        SolverFlags solver_flags;
-    };
-    auto flags = std::make_shared<Flags>();
-    command->add_option("--suite", flags->suite, "suite name (see sinew list), or all")->capture_default_str();
+                 "table (suite kernels: throughput of every constitutive model); exit 0 when every run reached "
+                 "the published optimum f* (feasible, at f*, stopped on its own criterion; converged where there "
+                 "is no f*), 3 otherwise");
+    auto flags = std::make_shared<BenchFlags>();
+    command->add_option("--suite", flags->suite, "suite name (see sinew list), kernels, or all")
+        ->capture_default_str();
     command->add_option("--solver", flags->solvers, "only these solvers (repeatable)");
     command->add_option("--problem", flags->problems, "only these problems (repeatable)");
     command->add_option("--json", flags->json, "write every run's full result to this file");
@@ -58,6 +128,10 @@ void add_bench_command(CLI::App& app, int& exit_code)
     command->add_option("--feasibility-tol", flags->reference.feasibility,
                         "largest constraint violation counted as reaching f*")
         ->capture_default_str();
+    command->add_option("--evaluations", flags->kernel_evaluations,
+                        "suite kernels: random deformation gradients per model")
+        ->capture_default_str()
+        ->check(CLI::PositiveNumber);
     add_solver_flags(*command, flags->solver_flags);
 
     command->callback([flags, &exit_code] {
@@ -65,59 +139,31 @@ void add_bench_command(CLI::App& app, int& exit_code)
         if (!flags->json.empty())
             write_text_file(flags->json, "");  // fail on a bad path before the solve, not after
         const auto suites = builtin_suites();
-        if (flags->suite != "all" && std::find(suites.begin(), suites.end(), flags->suite) == suites.end()) {
+        const bool kernels_only = flags->suite == kKernelSuite;
+        if (flags->suite != "all" && !kernels_only &&
+            std::find(suites.begin(), suites.end(), flags->suite) == suites.end()) {
             std::string valid = "all";
             for (const auto& s : suites)
                 valid += ", " + s;
-            throw InputError("unknown suite '" + flags->suite + "'; valid suites: " + valid);
+            throw InputError("unknown suite '" + flags->suite + "'; valid suites: " + valid + ", " + kKernelSuite);
         }
         for (const auto& name : flags->solvers)
             find_solver(name);
         for (const auto& name : flags->problems)
             find_builtin_problem(name);
 
-        std::cout << "| problem | solver | status | iterations | objective | f* rel. error | constraint violation "
-                     "| KKT residual | time (s) | reached f* |\n"
-                  << "|---|---|---|---:|---:|---:|---:|---:|---:|---|\n";
         nlohmann::json runs = nlohmann::json::array();
-        std::vector<std::string> skipped;
+        nlohmann::json kernels = nlohmann::json::array();
         bool all_good = true;
-        for (const auto& problem : builtin_problems()) {
-            if ((flags->suite != "all" && problem.suite != flags->suite) || !contains(flags->problems, problem.name))
-                continue;
-            for (const auto& solver : all_solvers()) {
-                if (!contains(flags->solvers, solver->name()))
-                    continue;
-                const std::unique_ptr<Nlp> nlp = problem.make();
-                if (const auto why = solver->refusal(*nlp)) {
-                    skipped.push_back(problem.name + " × " + solver->name() + ": " + *why);
-                    continue;
-                }
-                const Result result = solve(*nlp, solver->name(), options);
-                const double error = optimum_error(problem, result);
-                const bool good = reaches_reference(problem, result, flags->reference);
-                all_good = all_good && good;
-                std::cout << "| " << problem.name << " | " << solver->name() << " | " << to_string(result.status) << " | "
-                          << result.iterations << " | " << format("%.10g", result.objective) << " | "
-                          << format("%.1e", error) << " | " << format("%.1e", result.constraint_violation) << " | "
-                          << format("%.1e", result.kkt_residual) << " | " << format("%.4f", result.time_s) << " | "
-                          << (good ? "yes" : "no") << " |"
-                          << std::endl;
-                nlohmann::json run = to_json(result);
-                run["suite"] = problem.suite;
-                run["reference_objective"] =
-                    problem.reference_objective ? number(*problem.reference_objective) : nlohmann::json();
-                run["optimum_relative_error"] = number(error);
-                run["reached_reference"] = good;
-                runs.push_back(run);
-            }
-        }
-        for (const auto& line : skipped)
-            std::cout << "\nnot applicable: " << line;
-        if (!skipped.empty())
-            std::cout << "\n";
+        if (!kernels_only)
+            all_good = run_problems(*flags, options, runs);
+        const bool filtered = !flags->solvers.empty() || !flags->problems.empty();
+        if (kernels_only || (flags->suite == "all" && !filtered))
+            run_kernels(*flags, kernels);
         if (!flags->json.empty())
-            write_text_file(flags->json, nlohmann::json{{"suite", flags->suite}, {"runs", runs}}.dump(2) + "\n");
+            write_text_file(flags->json,
+                            nlohmann::json{{"suite", flags->suite}, {"runs", runs}, {"kernels", kernels}}.dump(2) +
+                                "\n");
         exit_code = all_good ? 0 : 3;
     });
 }

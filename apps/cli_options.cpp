@@ -19,14 +19,20 @@ void add_solver_flags(CLI::App& command, SolverFlags& flags)
                        "xtol_rel, xtol_abs, maxtime, vector_storage)");
 }
 
+std::pair<std::string, std::string> split_key_value(const std::string& text, const std::string& flag)
+{
+    const auto eq = text.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
+        throw InputError("malformed " + flag + " '" + text + "': expected key=value");
+    return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
 SolverOptions to_solver_options(const SolverFlags& flags)
 {
     SolverOptions options = flags.options;
     for (const std::string& text : flags.backend_options) {
-        const auto eq = text.find('=');
-        if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
-            throw InputError("malformed --option '" + text + "': expected key=value");
-        options.backend[text.substr(0, eq)] = text.substr(eq + 1);
+        const auto [key, value] = split_key_value(text, "--option");
+        options.backend[key] = value;
     }
     validate(options);
     return options;

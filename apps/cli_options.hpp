@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sinew::cli {
@@ -16,6 +17,10 @@ struct SolverFlags {
 
 /// --tol, --constr-tol, --kkt-tol, --max-iter, --option key=value (repeatable).
 void add_solver_flags(CLI::App& command, SolverFlags& flags);
+
+/// "key=value" split at the first '='; InputError naming `flag` when either
+/// side is empty or there is no '='.
+std::pair<std::string, std::string> split_key_value(const std::string& text, const std::string& flag);
 
 /// Options with the key=value texts parsed; InputError for a malformed one.
 SolverOptions to_solver_options(const SolverFlags& flags);

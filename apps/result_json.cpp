@@ -20,6 +20,9 @@ nlohmann::json vector(const Eigen::VectorXd& v)
 
 nlohmann::json to_json(const Result& result)
 {
+    nlohmann::json statistics = nlohmann::json::object();
+    for (const auto& [key, value] : result.statistics)
+        statistics[key] = number(value);
     nlohmann::json history = nlohmann::json::array();
     for (const HistoryRow& row : result.history)
         history.push_back({{"iteration", row.iteration},
@@ -46,6 +49,7 @@ nlohmann::json to_json(const Result& result)
             {"bound_multipliers_lower", vector(result.bound_multipliers_lower)},
             {"bound_multipliers_upper", vector(result.bound_multipliers_upper)},
             {"multipliers_estimated", result.multipliers_estimated},
+            {"statistics", statistics},
             {"history", history}};
 }
 

@@ -5,3 +5,10 @@ pkg_check_modules(Ipopt REQUIRED IMPORTED_TARGET ipopt)
 # NLopt ships a C and a C++ config that both define package NLopt: pin the C++ one.
 find_package(NLopt 2.7 CONFIG REQUIRED HINTS /usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake/nlopt_cxx)
 find_package(SuiteSparse 5 REQUIRED)
+# TetGen 1.5 (libtet1.5-dev): no pkg-config or CMake config in Debian.
+find_path(TETGEN_INCLUDE_DIR tetgen.h REQUIRED)
+find_library(TETGEN_LIBRARY tet REQUIRED)
+add_library(TetGen::tet UNKNOWN IMPORTED)
+set_target_properties(TetGen::tet PROPERTIES IMPORTED_LOCATION "${TETGEN_LIBRARY}"
+                      INTERFACE_INCLUDE_DIRECTORIES "${TETGEN_INCLUDE_DIR}")
+find_package(OpenMP REQUIRED)

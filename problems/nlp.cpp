@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace sinew {
 
@@ -19,6 +20,11 @@ void Nlp::constraints(ConstVectorRef, VectorRef) {}
 const SparsityPattern& Nlp::jacobian_pattern() const { return empty_pattern_; }
 
 void Nlp::jacobian_values(ConstVectorRef, VectorRef) {}
+
+void Nlp::projected_hessian_values(ConstVectorRef, VectorRef)
+{
+    throw std::logic_error(name() + " offers no projected Hessian");
+}
 
 NlpKind classify(const Nlp& nlp)
 {

@@ -69,6 +69,14 @@ public:
     virtual const SparsityPattern& hessian_pattern() const = 0;
     virtual void hessian_values(ConstVectorRef x, double sigma, ConstVectorRef lambda, VectorRef values) = 0;
 
+    /// Whether projected_hessian_values is offered: ∇²f with every term of f
+    /// (each element's ∂P/∂F, say) projected onto the PSD cone, so that the
+    /// sum is PSD. Projected Newton uses it; problems without it get none.
+    virtual bool has_projected_hessian() const { return false; }
+    /// Values in hessian_pattern()'s order (lower triangle), σ = 1 and no
+    /// constraint terms. Throws std::logic_error where not offered.
+    virtual void projected_hessian_values(ConstVectorRef x, VectorRef values);
+
 private:
     SparsityPattern empty_pattern_;
 };

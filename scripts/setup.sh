@@ -13,6 +13,7 @@ packages=(
   libopenblas0-pthread libopenblas-dev   # the BLAS in use (wins the libblas.so.3 alternative)
   nlohmann-json3-dev       # JSON
   libcli11-dev             # command line parsing
+  libtet1.5-dev            # TetGen 1.5: tetrahedralization of closed surfaces
 )
 
 missing=()

@@ -1,6 +1,7 @@
 #pragma once
 #include <Eigen/Core>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,9 @@ struct Result {
     int function_evaluations = 0;
     int linear_solves = -1;  ///< -1: the backend does not report it
     double time_s = 0.0;
+    /// Named totals a solver chooses to report (seconds spent in assembly,
+    /// factorization, …; counts such as symbolic_analyses).
+    std::map<std::string, double> statistics;
     std::vector<HistoryRow> history;
 };
 

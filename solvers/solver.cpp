@@ -4,6 +4,7 @@
 #include "sinew/solvers/backends/ipopt_solver.hpp"
 #include "sinew/solvers/backends/nlopt_solver.hpp"
 #include "sinew/solvers/kkt_measures.hpp"
+#include "sinew/solvers/newton/projected_newton.hpp"
 #include "sinew/solvers/progress_log.hpp"
 
 #include <chrono>
@@ -34,6 +35,7 @@ const std::vector<std::unique_ptr<Solver>>& all_solvers()
         all.push_back(make_ipopt_solver());
         for (auto& s : make_nlopt_solvers())
             all.push_back(std::move(s));
+        all.push_back(make_projected_newton_solver());
         return all;
     }();
     return solvers;

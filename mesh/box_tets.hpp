@@ -1,0 +1,18 @@
+#pragma once
+#include "sinew/mesh/mesh.hpp"
+
+#include <Eigen/Core>
+
+namespace sinew {
+
+/// A tet mesh of the box [lower, upper] with nx × ny × nz cells, each cell
+/// split into 6 tets along its main diagonal (the Kuhn / Freudenthal split,
+/// as FEniCS' BoxMesh does; docs/mesh.md): every cell uses the same diagonal
+/// direction, so neighbouring cells split their shared face the same way and
+/// the mesh is conforming. (nx+1)(ny+1)(nz+1) nodes numbered
+/// i + (nx+1)(j + (ny+1)k), 6·nx·ny·nz tets, all positively oriented, each of
+/// volume |box| / (6 nx ny nz), all in kDefaultGroupName, no fibers.
+/// Throws InputError when a cell count is below 1 or lower < upper fails.
+Mesh box_tets(const Eigen::Vector3d& lower, const Eigen::Vector3d& upper, int nx, int ny, int nz);
+
+} // namespace sinew

@@ -1,0 +1,123 @@
+#include "sinew/mesh/tetrahedralize_surface.hpp"
+
+#include "sinew/core/input_error.hpp"
+#include "sinew/mesh/element_orientation.hpp"
+#include "sinew/mesh/mesh_validation.hpp"
+#include "sinew/mesh/obj_reader.hpp"
+#include "sinew/mesh/remove_unused_nodes.hpp"
+#include "sinew/mesh/tetgen_run.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+namespace sinew {
+namespace {
+
+void check_options(const TetrahedralizeOptions& options, const std::string& source)
+{
+    std::ostringstream message;
+    if (!(std::isfinite(options.max_volume) && options.max_volume >= 0.0))
+        message << "max_volume = " << options.max_volume << " must be 0 (no bound) or positive";
+    else if (!(options.max_radius_edge_ratio == 0.0 ||
+               (std::isfinite(options.max_radius_edge_ratio) && options.max_radius_edge_ratio >= 1.0)))
+        message << "max_radius_edge_ratio = " << options.max_radius_edge_ratio << " must be 0 (off) or at least 1";
+    else
+        return;
+    throw InputError(source + ": tetrahedralize: " + message.str());
+}
+
+/// Every edge of a closed surface lies in exactly two triangles.
+void check_closed(const Mesh& surface, const std::string& source)
+{
+    std::map<std::pair<int, int>, std::vector<int>> triangles_of_edge;
+    for (int e = 0; e < surface.num_elements(); ++e)
+        for (int k = 0; k < 3; ++k) {
+            const int a = surface.elements(k, e);
+            const int b = surface.elements((k + 1) % 3, e);
+            triangles_of_edge[{std::min(a, b), std::max(a, b)}].push_back(e);
+        }
+    for (const auto& [edge, triangles] : triangles_of_edge)
+        if (triangles.size() != 2)
+            throw InputError(source + ": element " + std::to_string(triangles.front()) + ": its edge between nodes " +
+                             std::to_string(edge.first) + " and " + std::to_string(edge.second) + " is in " +
+                             std::to_string(triangles.size()) +
+                             " triangle(s); a closed surface has every edge in exactly 2");
+}
+
+std::array<int, 3> sorted_corners(const Eigen::Ref<const Eigen::VectorXi>& corners)
+{
+    std::array<int, 3> sorted{corners[0], corners[1], corners[2]};
+    std::sort(sorted.begin(), sorted.end());
+    return sorted;
+}
+
+/// TetGen's intersection detection (switch d) lists the input triangles that
+/// cross others; name the first as an element of the surface.
+void check_no_self_intersection(const Mesh& surface, const std::string& source)
+{
+    const Eigen::MatrixXi crossing = run_tetgen(surface, "pdQ", source).faces;
+    if (crossing.cols() == 0)
+        return;
+    std::map<std::array<int, 3>, int> element_of;
+    for (int e = 0; e < surface.num_elements(); ++e)
+        element_of.emplace(sorted_corners(surface.elements.col(e)), e);
+    const auto first = element_of.find(sorted_corners(crossing.col(0)));
+    const std::string example =
+        first == element_of.end() ? "" : " (element " + std::to_string(first->second) + " is one)";
+    throw InputError(source + ": the surface intersects itself: " + std::to_string(crossing.cols()) +
+                     " triangles cross other triangles" + example);
+}
+
+/// TetGen's switches: p (mesh the surface as a piecewise linear complex),
+/// Q (quiet), q<ratio>, a<volume>.
+std::string tetgen_switches(const TetrahedralizeOptions& options)
+{
+    std::ostringstream switches;
+    switches.precision(std::numeric_limits<double>::max_digits10);
+    switches << "pQ";
+    if (options.max_radius_edge_ratio > 0.0)
+        switches << "q" << options.max_radius_edge_ratio;
+    if (options.max_volume > 0.0)
+        switches << "a" << options.max_volume;
+    return switches.str();
+}
+
+} // namespace
+
+Mesh tetrahedralize_surface(const Mesh& surface, const std::string& source, const TetrahedralizeOptions& options)
+{
+    check_options(options, source);
+    if (surface.kind != ElementKind::triangle_3d)
+        throw InputError(source + ": tetrahedralize needs a triangle surface in 3D, got a " +
+                         to_string(surface.kind) + " mesh");
+    validate_mesh(surface, source);
+    check_closed(surface, source);
+    check_no_self_intersection(surface, source);
+
+    TetgenOutput output = run_tetgen(surface, tetgen_switches(options), source);
+    if (output.tetrahedra.cols() == 0)
+        throw InputError(source + ": TetGen produced no tetrahedra (does the surface enclose a volume?)");
+    Mesh mesh;
+    mesh.kind = ElementKind::tetrahedron;
+    mesh.nodes = std::move(output.points);
+    mesh.elements = std::move(output.tetrahedra);
+    mesh.group_names = {kDefaultGroupName};
+    mesh.element_groups.assign(mesh.num_elements(), 0);
+    remove_unused_nodes(mesh);
+    orient_elements_positively(mesh);
+    validate_mesh(mesh, source + " (tetrahedralized by TetGen)");
+    return mesh;
+}
+
+Mesh tetrahedralize_obj(const std::string& obj_path, const TetrahedralizeOptions& options)
+{
+    return tetrahedralize_surface(read_obj(obj_path), obj_path, options);
+}
+
+} // namespace sinew

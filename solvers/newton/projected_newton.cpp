@@ -1,0 +1,196 @@
+#include "sinew/solvers/newton/projected_newton.hpp"
+
+#include "sinew/core/input_error.hpp"
+#include "sinew/core/parse_number.hpp"
+#include "sinew/solvers/linear/linear_solver.hpp"
+#include "sinew/solvers/newton/pattern_matrix.hpp"
+#include "sinew/solvers/progress_log.hpp"
+
+#include <chrono>
+#include <cmath>
+
+namespace sinew {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using Eigen::VectorXd;
+
+double seconds_since(Clock::time_point start)
+{
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+struct NewtonSettings {
+    std::string linear_solver = "cholmod";
+    double armijo = 1e-4;
+    int max_backtracks = 40;
+};
+
+NewtonSettings read_settings(const SolverOptions& options)
+{
+    NewtonSettings s;
+    for (const auto& [key, value] : options.backend) {
+        const std::string what = "projected-newton option " + key;
+        if (key == "linear_solver")
+            s.linear_solver = value;
+        else if (key == "armijo")
+            s.armijo = parse_finite_double(value, what);
+        else if (key == "max_backtracks")
+            s.max_backtracks = parse_int(value, what);
+        else
+            throw InputError("unknown projected-newton option '" + key +
+                             "'; valid options: linear_solver, armijo, max_backtracks");
+    }
+    if (!(s.armijo > 0.0 && s.armijo < 0.5))
+        throw InputError("projected-newton option armijo must lie in (0, 0.5)");
+    if (s.max_backtracks < 1)
+        throw InputError("projected-newton option max_backtracks must be at least 1");
+    make_linear_solver(s.linear_solver);  // InputError naming the valid solvers
+    return s;
+}
+
+class ProjectedNewton final : public Solver {
+public:
+    std::string name() const override { return "projected-newton"; }
+    std::string description() const override
+    {
+        return "Newton on the PSD-projected Hessian, CHOLMOD, Armijo backtracking; unconstrained problems";
+    }
+
+    std::optional<std::string> refusal(const Nlp& nlp) const override
+    {
+        const NlpKind kind = classify(nlp);
+        if (!kind.unconstrained())
+            return "projected-newton takes unconstrained problems only (this one has " + kind.describe() +
+                   "; eliminate Dirichlet conditions, or use ipopt)";
+        return std::nullopt;
+    }
+
+    Result run(Nlp& nlp, const SolverOptions& options) const override
+    {
+        const NewtonSettings settings = read_settings(options);
+        const auto start = Clock::now();
+        const int n = nlp.num_variables();
+        ProgressLog log(options, name(), nlp.name());
+        Result result;
+        auto linear = make_linear_solver(settings.linear_solver);
+        PatternMatrix hessian(nlp.hessian_pattern(), n);
+        VectorXd hessian_values(nlp.hessian_pattern().nonzeros());
+        const VectorXd no_multipliers(0);
+        const bool projected = nlp.has_projected_hessian();
+        double assembly_s = 0.0, factorization_s = 0.0, linear_solve_s = 0.0;
+
+        VectorXd x = nlp.starting_point(), gradient(n), step(n), trial(n);
+        double f = nlp.objective(x);
+        result.function_evaluations = 1;
+        auto finish = [&](Status status, const std::string& message) {
+            result.status = status;
+            result.message = message;
+            result.x = x;
+            result.linear_solves = linear->stats().solves;
+            result.statistics = {{"assembly_s", assembly_s},
+                              {"factorization_s", factorization_s},
+                              {"linear_solve_s", linear_solve_s},
+                              {"symbolic_analyses", linear->stats().symbolic_analyses}};
+            return result;
+        };
+        if (!std::isfinite(f))
+            return finish(Status::numerical_error, "objective not finite at the starting point");
+        auto timed = Clock::now();
+        nlp.gradient(x, gradient);
+        assembly_s += seconds_since(timed);
+        const double initial_gradient = gradient.cwiseAbs().maxCoeff();
+        auto record = [&](int iteration, double step_norm, double alpha) {
+            HistoryRow row;
+            row.iteration = iteration;
+            row.objective = f;
+            row.dual_residual = gradient.cwiseAbs().maxCoeff();
+            row.step_norm = step_norm;
+            row.step_length = alpha;
+            row.time_s = seconds_since(start);
+            result.history.push_back(row);
+            log.row(row);
+        };
+        record(0, 0.0, 0.0);
+
+        for (int iteration = 1;; ++iteration) {
+            const double gradient_norm = gradient.cwiseAbs().maxCoeff();
+            if (gradient_norm <= options.tolerance * initial_gradient)
+                return finish(Status::converged, "gradient reduced by tol");
+            if (iteration > options.max_iterations)
+                return finish(Status::max_iterations, "iteration limit reached");
+            result.iterations = iteration;
+
+            // H: projected where the problem offers it (seed 000 §5.6), else exact.
+            timed = Clock::now();
+            if (projected)
+                nlp.projected_hessian_values(x, hessian_values);
+            else
+                nlp.hessian_values(x, 1.0, no_multipliers, hessian_values);
+            hessian.fill(hessian_values);
+            assembly_s += seconds_since(timed);
+
+            // H d = −∇f; an indefinite H (exact Hessian, or round-off) is
+            // shifted by a growing multiple of I until Cholesky succeeds.
+            double shift = 0.0;
+            LinearStatus factorized;
+            for (;;) {
+                timed = Clock::now();
+                factorized = linear->factorize(hessian.matrix());
+                factorization_s += seconds_since(timed);
+                if (factorized != LinearStatus::not_positive_definite && factorized != LinearStatus::singular)
+                    break;
+                const double next = shift == 0.0 ? 1e-8 * std::max(1.0, hessian.matrix().diagonal().cwiseAbs().maxCoeff())
+                                                 : 10.0 * shift;
+                if (!std::isfinite(next) || next > 1e20)
+                    break;
+                hessian.shift_diagonal(next - shift);
+                shift = next;
+            }
+            if (factorized != LinearStatus::ok)
+                return finish(Status::numerical_error, "factorization failed: " + linear->last_message());
+            timed = Clock::now();
+            const LinearStatus solved = linear->solve(-gradient, step);
+            linear_solve_s += seconds_since(timed);
+            if (solved != LinearStatus::ok || !step.allFinite())
+                return finish(Status::numerical_error, "linear solve failed: " + linear->last_message());
+            double slope = gradient.dot(step);
+            if (!(slope < 0.0)) {
+                step = -gradient;  // not a descent direction: steepest descent
+                slope = -gradient.squaredNorm();
+            }
+
+            // Armijo backtracking: f(x + α d) ≤ f(x) + c₁ α ∇fᵀd, f finite.
+            double alpha = 1.0;
+            double f_trial = kInfinity;
+            int backtracks = 0;
+            for (;; ++backtracks) {
+                trial = x + alpha * step;
+                f_trial = nlp.objective(trial);
+                ++result.function_evaluations;
+                if (std::isfinite(f_trial) && f_trial <= f + settings.armijo * alpha * slope)
+                    break;
+                if (backtracks == settings.max_backtracks) {
+                    // At round-off level f cannot decrease measurably: stop there.
+                    if (std::isfinite(f_trial) && std::abs(f_trial - f) <= 1e-14 * std::max(1.0, std::abs(f)))
+                        return finish(Status::stalled, "no measurable decrease of f along the Newton step");
+                    return finish(Status::line_search_failed, "no sufficient decrease after " +
+                                                                  std::to_string(backtracks) + " halvings");
+                }
+                alpha *= 0.5;
+            }
+            x.swap(trial);
+            f = f_trial;
+            timed = Clock::now();
+            nlp.gradient(x, gradient);
+            assembly_s += seconds_since(timed);
+            record(iteration, alpha * step.cwiseAbs().maxCoeff(), alpha);
+        }
+    }
+};
+
+} // namespace
+
+std::unique_ptr<Solver> make_projected_newton_solver() { return std::make_unique<ProjectedNewton>(); }
+
+} // namespace sinew
