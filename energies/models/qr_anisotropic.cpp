@@ -45,10 +45,10 @@ Vec<Dim> unit_fiber(const Vec<Dim>& fiber)
 /// a = b₂ = B e₂ gives r = ‖F̃ e₂‖ = √(r₁₂² + r₂₂²) and q = Q R e₂/r (the ky term).
 template <int Dim>
 struct Fiber {
-    double k = 0.0;             ///< kx or ky, Pa
+    double k = 0.0;                 ///< kx or ky, Pa
     Vec<Dim> a = Vec<Dim>::Zero();  ///< unit material direction
     Vec<Dim> q = Vec<Dim>::Zero();  ///< F a/r, the unit image (0 when r = 0, where it is undefined)
-    double r = 1.0;             ///< ‖F a‖, the stretch along a
+    double r = 1.0;                 ///< ‖F a‖, the stretch along a
 
     /// 1 − 1/r: the fiber's ∂P/∂F across q, divided by k; negative when compressed.
     double bending() const { return 1.0 - 1.0 / std::max(r, kMinFiberStretch); }
@@ -119,7 +119,8 @@ double energy_of(const QrState<Dim>& st, const Mat<Dim>& F)
     const double Jm1 = st.J - 1.0;
     double psi = 0.5 * st.alpha * (F.squaredNorm() - Dim) - st.alpha * Jm1  // g Ψ^μ
                  + 0.5 * st.beta * Jm1 * Jm1;                                // g_λ Ψ^λ
-    for (const Fiber<Dim>* fiber : {&st.fiber, &st.second})                 // kx/2 (r₁₁ − 1)², ky/2 (√(r₁₂² + r₂₂²) − 1)²
+    // Ψ^f = kx/2 (r₁₁ − 1)² + ky/2 (√(r₁₂² + r₂₂²) − 1)², never degraded
+    for (const Fiber<Dim>* fiber : {&st.fiber, &st.second})
         psi += 0.5 * fiber->k * (fiber->r - 1.0) * (fiber->r - 1.0);
     return psi;
 }
@@ -128,8 +129,8 @@ double energy_of(const QrState<Dim>& st, const Mat<Dim>& F)
 /// exists. A R⁻ᵀ is, term by term, the gradient at X = R of ψ written in
 /// X = Qᵀ F B: ½Σrᵢⱼ² → R, J → cof R = J R⁻ᵀ, r₁₁ = ‖X e₁‖ → e₁e₁ᵀ,
 /// s = ‖X e₂‖ → (R e₂/s) e₂ᵀ; mapped back by Q(·)Bᵀ these are F, cof F,
-/// q₁ a₀ᵀ and q₂' b₂ᵀ. Bounded as any rᵢᵢ → 0: polynomial in F plus fiber
-/// forces of size k|r − 1|.
+/// q₁ a₀ᵀ (q₁ = F a₀/r₁₁) and q_b b₂ᵀ (q_b = F b₂/s). Bounded as any rᵢᵢ → 0:
+/// polynomial in F plus fiber forces of size k|r − 1|.
 template <int Dim>
 Mat<Dim> stress_of(const QrState<Dim>& st, const Mat<Dim>& F)
 {

@@ -11,9 +11,9 @@ namespace sinew {
 /// for plane (Dim = 2) and volume (Dim = 3) elements. Docs:
 /// docs/energies/qr-anisotropic.md.
 ///
-/// F is first put in the material frame B = [a₀ b₂ (b₃)] (material_frame, a
-/// rotation with B e₁ = a₀), F̃ = F B = Q R in the sign convention of §3.1
-/// (rotation_qr.hpp: r₁₁, r₂₂ ≥ 0, det Q = +1, so J = Π rᵢᵢ = det F). With
+/// The seed writes ψ on R of F̃ = F B = Q R, B = [a₀ b₂ (b₃)] the material frame
+/// (material_frame, a rotation with B e₁ = a₀), in the sign convention of §3.1
+/// (rotation_qr.hpp: r₁₁, r₂₂ ≥ 0 and det Q = +1, so J = Π rᵢᵢ = det F). With
 /// n = Dim and the degradation g = (1 − d)² of §3.6:
 ///
 ///     ψ = g Ψ^μ + g_λ Ψ^λ + Ψ^f,     g_λ = g for J ≥ 1, 1 for J < 1
@@ -22,10 +22,11 @@ namespace sinew {
 ///     Ψ^f = kx/2 (r₁₁ − 1)² + ky/2 (√(r₁₂² + r₂₂²) − 1)²     (ky: 3D only)
 ///
 /// Since B and Q are rotations, Σrᵢⱼ² = ‖F‖², r₁₁ = ‖F a₀‖ and
-/// √(r₁₂² + r₂₂²) = ‖F b₂‖: ψ depends on a₀ alone except through the ky term,
-/// which reads the second axis b₂ of the frame convention.
-/// P = Q (A R⁻ᵀ) Bᵀ (§3.2) with A R⁻ᵀ in the division-free form §3.5 shows
-/// exists, so P is finite and bounded as any rᵢᵢ → 0.
+/// √(r₁₂² + r₂₂²) = ‖F b₂‖, and the code evaluates ψ, P = Q A R⁻ᵀ Bᵀ (§3.2, in
+/// the division-free form of §3.5) and ∂P/∂F (§3.3–3.4, worked out per term) in
+/// these invariants of F: the same functions, without the frame and the QR.
+/// ψ depends on a₀ alone except through the ky term, which reads the second
+/// axis b₂ of the frame convention. P is finite and bounded as any rᵢᵢ → 0.
 ///
 /// Linearization at rest (d = 0): isotropic linear elasticity with Lamé
 /// parameters (μ, λ − μ), plus kx along a₀ and ky along b₂. The constructor
@@ -58,9 +59,10 @@ public:
     /// Throws InputError for a zero or non-finite fiber or damage outside [0, 1].
     double energy(const Deformation& F, const Point& point) const override;
 
-    /// ψ, P and ∂P/∂F from one QR. Projection::clamp returns ∂P/∂F itself when
-    /// it is PSD (a Cholesky test, with a 1e-12 relative shift so that PSD
-    /// matrices with zero modes such as the rest state pass); otherwise 2D:
+    /// ψ, P and ∂P/∂F sharing cof F, J and the fiber images. Projection::clamp
+    /// returns ∂P/∂F itself when it is PSD (cheap tests, else a Cholesky test
+    /// with a 1e-12 relative shift so that PSD matrices with zero modes such as
+    /// the rest state pass); otherwise 2D:
     /// the nearest PSD matrix (4×4 eigen-decomposition); 3D: the sum of each
     /// term's own PSD part, in closed form (isotropic part through its
     /// analytic eigensystem, fiber terms exactly).

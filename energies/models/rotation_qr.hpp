@@ -1,7 +1,8 @@
 #pragma once
 // F = Q R with Q a rotation and R upper triangular, in the sign convention of
-// seed 004 §3.1, and its differential (seed 004 §3.4). Used by the QR-based
-// anisotropic model (qr_anisotropic.hpp).
+// seed 004 §3.1, and its differential (seed 004 §3.4): the seed's QR route.
+// The QR-based anisotropic model (qr_anisotropic.hpp) evaluates the same
+// quantities as invariants of F; its tests check the two against each other.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
