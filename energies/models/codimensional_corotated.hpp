@@ -19,7 +19,7 @@ namespace sinew {
 /// only, so it is invariant under every orthogonal Q of R³ (reflections too):
 /// a 3×2 F has no inversion, a mirrored triangle is a rotated one. Finite ψ, P
 /// and ∂P/∂F also at rank-deficient F (collapsed triangles).
-/// Docs: docs/energies/codim-corotated.md.
+/// Docs: docs/energies.md (codim-corotated).
 class CodimensionalCorotated final : public MembraneModel {
 public:
     static constexpr const char* kName = "codim-corotated";

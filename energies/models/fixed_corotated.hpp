@@ -13,7 +13,7 @@ namespace sinew {
 ///     ψ = μ ‖F − R‖² + λ/2 (J − 1)² = μ Σᵢ (σᵢ − 1)² + λ/2 (J − 1)²,
 ///
 /// R = U Vᵀ from the rotation-variant SVD (σ₂ < 0 for inverted F), so ψ is
-/// defined and finite for every F. Docs: docs/energies/fixed-corotated.md.
+/// defined and finite for every F. Docs: docs/energies.md (fixed-corotated).
 class FixedCorotated final : public Model3d {
 public:
     static constexpr const char* kName = "fixed-corotated";

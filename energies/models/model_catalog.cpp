@@ -62,7 +62,7 @@ const std::vector<ModelEntry>& model_catalog()
         std::vector<ModelEntry> models;
         {
             ModelEntry e;
-            e.name = "mooney-rivlin-muscle";
+            e.name = MooneyRivlinMuscle::kName;
             e.description = "Mooney-Rivlin solid with active and passive muscle fibers (seed 000 §4-5)";
             e.parameters = MooneyRivlinMuscle::parameter_specs();
             e.make_3x3 = maker<MooneyRivlinMuscle, Model3d>();
@@ -78,7 +78,7 @@ const std::vector<ModelEntry>& model_catalog()
         }
         {
             ModelEntry e;
-            e.name = "qr-anisotropic";
+            e.name = QrAnisotropic<3>::kName;
             e.description = "QR-based anisotropic elasticity with damage, 2D or 3D by the size of F (seed 004 §3)";
             e.parameters = QrAnisotropic<3>::parameter_specs();
             e.make_3x3 = maker<QrAnisotropic<3>, Model3d>();

@@ -4,7 +4,7 @@
 // fiber response, evaluated in the SVD-diagonal frame, defined through
 // inversion by a threshold on the singular values. Full account, including
 // the places where the seed is wrong or ambiguous:
-// docs/energies/mooney-rivlin-muscle.md.
+// docs/energies.md (mooney-rivlin-muscle).
 #include "sinew/energies/models/constitutive_model.hpp"
 #include "sinew/energies/models/model_parameters.hpp"
 #include "sinew/energies/models/muscle_fiber_curves.hpp"

@@ -6,7 +6,7 @@
 // stretch λ_opt of Blemker et al. Each curve gives the fiber stress
 // f(λ) = ∂Φ/∂λ (PhysBAM's "tension"), its slope f'(λ) and the exact energy
 // primitive Φ(λ) = ∫₁^λ f. Formulas, defaults and what differs from the
-// published curves: docs/energies/mooney-rivlin-muscle.md.
+// published curves: docs/energies.md (mooney-rivlin-muscle).
 #include <array>
 
 namespace sinew {

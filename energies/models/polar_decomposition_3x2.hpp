@@ -3,7 +3,7 @@
 // 3D) through its thin SVD, and the derivative ∂R/∂F of the polar factor in the
 // SVD frame. Seed 002 §1 defines R (3×2, orthonormal columns) and S (2×2 SPD);
 // seed 002 eq. (7) needs ∂R/∂F and leaves it unexpanded. Derivation in
-// docs/energies/codim-corotated.md.
+// docs/energies.md (codim-corotated).
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 

@@ -9,7 +9,7 @@ namespace sinew {
 
 /// QR-based anisotropic hyperelasticity with damage (AnisoMPM, seed 004 §3),
 /// for plane (Dim = 2) and volume (Dim = 3) elements. Docs:
-/// docs/energies/qr-anisotropic.md.
+/// docs/energies.md (qr-anisotropic).
 ///
 /// The seed writes ψ on R of F̃ = F B = Q R, B = [a₀ b₂ (b₃)] the material frame
 /// (material_frame, a rotation with B e₁ = a₀), in the sign convention of §3.1

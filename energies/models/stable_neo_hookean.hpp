@@ -15,7 +15,7 @@ namespace sinew {
 /// with λ' = λ + μ, so that the linearization at F = I is linear elasticity
 /// with the Lamé parameters μ, λ the user gives. P(I) = 0, ψ(I) = 0, ψ ≥ 0.
 /// A polynomial in F: defined, finite and smooth for inverted F.
-/// Docs: docs/energies/stable-neo-hookean.md.
+/// Docs: docs/energies.md (stable-neo-hookean).
 class StableNeoHookean final : public Model3d {
 public:
     static constexpr const char* kName = "stable-neo-hookean";

@@ -30,6 +30,9 @@ struct Capabilities {
     /// converge linearly on them: 3000 evaluations leave Rosenbrock at
     /// f = 3.5e-6 (n = 2) and 5.6e-3 (n = 1000); nlopt-lbfgs takes 56.
     bool needs_inequalities = false;
+    /// Refuse problems without constraints: AUGLAG then runs its inner
+    /// LD_LBFGS once, the same run as nlopt-lbfgs.
+    bool needs_constraints = false;
 };
 
 /// The constraints of an Nlp in NLopt's form: h(x) = 0 and q(x) <= 0.
@@ -295,6 +298,8 @@ public:
             return name_ + " takes no inequality constraints";
         if (kind.has_bounds && !can_.bounds)
             return name_ + " takes no bounds";
+        if (can_.needs_constraints && !kind.has_equalities && !kind.has_inequalities)
+            return name_ + " without constraints is its inner LD_LBFGS alone; use nlopt-lbfgs";
         if (can_.needs_inequalities && !kind.has_inequalities)
             return name_ + " is meant for inequality-constrained problems and converges only linearly without "
                            "them; use nlopt-lbfgs or ipopt";
@@ -394,7 +399,7 @@ std::vector<std::unique_ptr<Solver>> make_nlopt_solvers()
         "nlopt-lbfgs", nlopt::LD_LBFGS, Capabilities{true, false, false},
         "NLopt LD_LBFGS limited-memory BFGS; bounds only"));
     solvers.push_back(std::make_unique<NloptSolver>(
-        "nlopt-auglag", nlopt::AUGLAG, Capabilities{true, true, true},
+        "nlopt-auglag", nlopt::AUGLAG, Capabilities{true, true, true, 0, false, true},
         "NLopt AUGLAG augmented Lagrangian around LD_LBFGS; bounds, equalities, inequalities"));
     return solvers;
 }
