@@ -2,6 +2,7 @@
 
 #include "sinew/core/input_error.hpp"
 #include "sinew/problems/classic/classic_problems.hpp"
+#include "sinew/problems/quasistatic/builtin_scenes.hpp"
 
 #include <algorithm>
 
@@ -11,6 +12,8 @@ const std::vector<BuiltinProblem>& builtin_problems()
 {
     static const std::vector<BuiltinProblem> problems = [] {
         std::vector<BuiltinProblem> all = classic_problems();
+        for (auto& scene : quasistatic_scenes())
+            all.push_back(std::move(scene));
         return all;
     }();
     return problems;

@@ -6,9 +6,11 @@
 namespace sinew {
 
 /// Projected Newton for unconstrained problems (quasistatics with Dirichlet
-/// conditions eliminated): the Newton step on the PSD-projected Hessian
-/// (Nlp::projected_hessian_values; the exact Hessian, shifted until
-/// positive definite, where a problem offers none), a sparse Cholesky with
+/// conditions eliminated): the Newton step on the exact Hessian after a full
+/// step when Cholesky accepts it (quadratic convergence near the solution),
+/// on the PSD-projected Hessian otherwise (Nlp::projected_hessian_values; the
+/// exact Hessian shifted until positive definite where a problem offers no
+/// projection), a sparse Cholesky with
 /// the symbolic analysis reused across iterations, and a backtracking Armijo
 /// line search that backs off wherever f is not finite (an inverted element).
 ///

@@ -1,0 +1,219 @@
+#include "sinew/problems/quasistatic/quasistatic_problem.hpp"
+
+#include "sinew/core/input_error.hpp"
+
+#include <cmath>
+
+namespace sinew {
+
+std::string to_string(DirichletStrategy strategy)
+{
+    return strategy == DirichletStrategy::eliminate ? "eliminate" : "equality_constraints";
+}
+
+QuasistaticProblem::QuasistaticProblem(const Eigen::MatrixXd& rest_positions,
+                                       std::shared_ptr<TotalPotential> potential, std::vector<DirichletSet> dirichlet,
+                                       QuasistaticOptions options)
+    : options_(std::move(options)), potential_(std::move(potential)), sets_(std::move(dirichlet))
+{
+    const std::string who = "quasistatic problem '" + options_.name + "': ";
+    if (!potential_)
+        throw InputError(who + "no potential");
+    const int d = potential_->dimension();
+    const int num_nodes = potential_->num_nodes();
+    if (rest_positions.rows() != d || rest_positions.cols() != num_nodes)
+        throw InputError(who + "rest positions are " + std::to_string(rest_positions.rows()) + "x" +
+                         std::to_string(rest_positions.cols()) + " but the potential has " +
+                         std::to_string(num_nodes) + " nodes in " + std::to_string(d) + "D");
+    if (!rest_positions.allFinite())
+        throw InputError(who + "a rest position is not finite");
+    rest_ = Eigen::Map<const Eigen::VectorXd>(rest_positions.data(), rest_positions.size());
+
+    // Which set holds each node (−1: free).
+    std::vector<int> set_of(static_cast<std::size_t>(num_nodes), -1);
+    for (int s = 0; s < static_cast<int>(sets_.size()); ++s) {
+        check_dirichlet_set(sets_[s], s, d, num_nodes);
+        for (int node : sets_[s].nodes) {
+            if (set_of[node] >= 0)
+                throw InputError(who + "node " + std::to_string(node) + " is in both " +
+                                 dirichlet_set_label(sets_[set_of[node]], set_of[node]) + " and " +
+                                 dirichlet_set_label(sets_[s], s));
+            set_of[node] = s;
+        }
+    }
+    for (int node = 0; node < num_nodes; ++node)
+        for (int k = 0; k < d; ++k)
+            (set_of[node] >= 0 ? prescribed_coordinates_ : free_coordinates_).push_back(node * d + k);
+    if (free_coordinates_.empty())
+        throw InputError(who + "every node is prescribed: nothing to solve for");
+
+    prescribed_ = rest_;
+    full_x_ = rest_;
+    for (int s = 0; s < static_cast<int>(sets_.size()); ++s)
+        apply_set(sets_[s], s);
+    start_ = rest_;
+    full_gradient_.resize(rest_.size());
+
+    // The potential's Hessian pattern restricted to the variables, mapped once.
+    const HessianPattern& full = potential_->hessian_pattern();
+    full_hessian_.resize(full.nonzeros());
+    if (eliminating()) {
+        std::vector<int> variable_of(static_cast<std::size_t>(rest_.size()), -1);
+        for (int k = 0; k < static_cast<int>(free_coordinates_.size()); ++k)
+            variable_of[free_coordinates_[k]] = k;
+        for (int entry = 0; entry < full.nonzeros(); ++entry) {
+            const int row = variable_of[full.rows()[entry]];
+            const int col = variable_of[full.cols()[entry]];
+            if (row >= 0 && col >= 0) {
+                hessian_pattern_.add(row, col);
+                hessian_entries_.push_back(entry);
+            }
+        }
+    } else {
+        for (int entry = 0; entry < full.nonzeros(); ++entry) {
+            hessian_pattern_.add(full.rows()[entry], full.cols()[entry]);
+            hessian_entries_.push_back(entry);
+        }
+        for (int k = 0; k < num_prescribed_coordinates(); ++k)
+            jacobian_pattern_.add(k, prescribed_coordinates_[k]);
+    }
+}
+
+void QuasistaticProblem::apply_set(const DirichletSet& s, int set)
+{
+    const int d = potential_->dimension();
+    Eigen::VectorXd updated = prescribed_;
+    for (int node : s.nodes)
+        for (int i = 0; i < d; ++i) {
+            double x = s.translation[i];
+            for (int j = 0; j < d; ++j)
+                x += s.map(i, j) * rest_[node * d + j];
+            if (!std::isfinite(x))
+                throw InputError(dirichlet_set_label(s, set) + ": the prescribed position of node " +
+                                 std::to_string(node) + " is not finite");
+            updated[node * d + i] = x;
+        }
+    prescribed_ = updated;
+    for (int i : prescribed_coordinates_)
+        full_x_[i] = prescribed_[i];
+}
+
+int QuasistaticProblem::num_variables() const
+{
+    return eliminating() ? static_cast<int>(free_coordinates_.size()) : static_cast<int>(rest_.size());
+}
+
+int QuasistaticProblem::num_constraints() const { return eliminating() ? 0 : num_prescribed_coordinates(); }
+
+void QuasistaticProblem::constraint_bounds(VectorRef lower, VectorRef upper) const
+{
+    lower.setZero();
+    upper.setZero();
+}
+
+Nlp::Vector QuasistaticProblem::starting_point() const
+{
+    Eigen::VectorXd configuration = start_;
+    for (int i : prescribed_coordinates_)
+        configuration[i] = prescribed_[i];
+    return variables_of(configuration);
+}
+
+const Eigen::VectorXd& QuasistaticProblem::configuration_of(ConstVectorRef x)
+{
+    if (eliminating())
+        for (int k = 0; k < static_cast<int>(free_coordinates_.size()); ++k)
+            full_x_[free_coordinates_[k]] = x[k];
+    else
+        full_x_ = x;
+    return full_x_;
+}
+
+double QuasistaticProblem::objective(ConstVectorRef x) { return potential_->value(configuration_of(x)); }
+
+void QuasistaticProblem::gradient(ConstVectorRef x, VectorRef grad)
+{
+    const Eigen::VectorXd& configuration = configuration_of(x);
+    if (!eliminating()) {
+        potential_->gradient(configuration, grad);
+        return;
+    }
+    potential_->gradient(configuration, full_gradient_);
+    for (int k = 0; k < static_cast<int>(free_coordinates_.size()); ++k)
+        grad[k] = full_gradient_[free_coordinates_[k]];
+}
+
+void QuasistaticProblem::constraints(ConstVectorRef x, VectorRef c)
+{
+    for (int k = 0; k < num_constraints(); ++k)
+        c[k] = x[prescribed_coordinates_[k]] - prescribed_[prescribed_coordinates_[k]];
+}
+
+void QuasistaticProblem::jacobian_values(ConstVectorRef, VectorRef values) { values.setOnes(); }
+
+void QuasistaticProblem::fill_hessian(ConstVectorRef x, Projection projection, double sigma, VectorRef values)
+{
+    if (sigma == 0.0) {
+        values.setZero();
+        return;
+    }
+    potential_->hessian_values(configuration_of(x), projection, full_hessian_);
+    for (int k = 0; k < static_cast<int>(hessian_entries_.size()); ++k)
+        values[k] = sigma * full_hessian_[hessian_entries_[k]];
+}
+
+void QuasistaticProblem::hessian_values(ConstVectorRef x, double sigma, ConstVectorRef, VectorRef values)
+{
+    fill_hessian(x, Projection::none, sigma, values);
+}
+
+void QuasistaticProblem::projected_hessian_values(ConstVectorRef x, VectorRef values)
+{
+    fill_hessian(x, Projection::clamp, 1.0, values);
+}
+
+void QuasistaticProblem::set_affine_map(int set, const Eigen::MatrixXd& map, const Eigen::VectorXd& translation)
+{
+    if (set < 0 || set >= static_cast<int>(sets_.size()))
+        throw InputError("quasistatic problem '" + options_.name + "': Dirichlet set " + std::to_string(set) +
+                         " does not exist (" + std::to_string(sets_.size()) + " sets)");
+    DirichletSet updated = sets_[set];
+    updated.map = map;
+    updated.translation = translation;
+    check_dirichlet_set(updated, set, potential_->dimension(), potential_->num_nodes());
+    apply_set(updated, set);
+    sets_[set] = std::move(updated);
+}
+
+void QuasistaticProblem::set_starting_configuration(ConstVectorRef configuration)
+{
+    if (configuration.size() != rest_.size())
+        throw InputError("quasistatic problem '" + options_.name + "': starting configuration has " +
+                         std::to_string(configuration.size()) + " coordinates, expected " +
+                         std::to_string(rest_.size()));
+    if (!configuration.allFinite())
+        throw InputError("quasistatic problem '" + options_.name + "': starting configuration is not finite");
+    start_ = configuration;
+}
+
+Eigen::VectorXd QuasistaticProblem::full_configuration(ConstVectorRef x) const
+{
+    if (!eliminating())
+        return x;
+    Eigen::VectorXd configuration = prescribed_;
+    for (int k = 0; k < static_cast<int>(free_coordinates_.size()); ++k)
+        configuration[free_coordinates_[k]] = x[k];
+    return configuration;
+}
+
+Eigen::VectorXd QuasistaticProblem::variables_of(ConstVectorRef configuration) const
+{
+    if (!eliminating())
+        return configuration;
+    Eigen::VectorXd x(free_coordinates_.size());
+    for (int k = 0; k < static_cast<int>(free_coordinates_.size()); ++k)
+        x[k] = configuration[free_coordinates_[k]];
+    return x;
+}
+
+} // namespace sinew
