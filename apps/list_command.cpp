@@ -17,11 +17,11 @@ void add_list_command(CLI::App& app, int& exit_code)
             std::cout << "  suite " << suite << "\n";
             for (const auto& p : builtin_problems())
                 if (p.suite == suite)
-                    std::cout << "    " << std::left << std::setw(18) << p.name << p.description << "\n";
+                    std::cout << "    " << std::left << std::setw(25) << p.name << " " << p.description << "\n";
         }
         std::cout << "solvers:\n";
         for (const auto& s : all_solvers())
-            std::cout << "  " << std::left << std::setw(18) << s->name() << s->description() << "\n";
+            std::cout << "  " << std::left << std::setw(27) << s->name() << " " << s->description() << "\n";
         exit_code = 0;
     });
 }

@@ -20,11 +20,11 @@ std::string cantilever_name(int cells_across, bool twisted)
     return std::string(twisted ? "twisted-cantilever-" : "cantilever-") + std::to_string((tets + 500) / 1000) + "k";
 }
 
-BuiltinProblem cantilever_scene(int cells_across, bool twisted)
+BuiltinProblem cantilever_scene(int cells_across, bool twisted, const std::string& suite)
 {
     const int tets = 6 * 5 * cells_across * cells_across * cells_across;
     return {cantilever_name(cells_across, twisted),
-            "quasistatic",
+            suite,
             std::string(twisted ? "twisted cantilever" : "cantilever") + ": " + std::to_string(tets) +
                 " Mooney-Rivlin tets under gravity" + (twisted ? ", end turned 45° and pulled 0.1 m" : ""),
             [=]() -> std::unique_ptr<Nlp> { return make_cantilever(cells_across, twisted); },
@@ -71,7 +71,9 @@ std::unique_ptr<QuasistaticProblem> make_cantilever(int cells_across, bool twist
 
 std::vector<BuiltinProblem> quasistatic_scenes()
 {
-    return {cantilever_scene(6, false), cantilever_scene(6, true)};
+    return {cantilever_scene(6, false, "quasistatic"),      cantilever_scene(6, true, "quasistatic"),
+            cantilever_scene(12, false, "quasistatic-large"), cantilever_scene(12, true, "quasistatic-large"),
+            cantilever_scene(19, false, "quasistatic-large"), cantilever_scene(19, true, "quasistatic-large")};
 }
 
 } // namespace sinew

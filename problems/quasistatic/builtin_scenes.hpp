@@ -17,8 +17,8 @@ namespace sinew {
 std::unique_ptr<QuasistaticProblem> make_cantilever(int cells_across, bool twisted,
                                                     DirichletStrategy dirichlet = DirichletStrategy::eliminate);
 
-/// The quasistatic scenes of `sinew bench --suite quasistatic` (issue 4):
-/// cantilevers of Mooney-Rivlin tets under gravity, straight and twisted.
+/// The cantilever scenes, straight and twisted: about 6k tets in suite
+/// `quasistatic`, about 52k and 206k in `quasistatic-large`.
 /// No published optimum: a run counts when it converges.
 std::vector<BuiltinProblem> quasistatic_scenes();
 

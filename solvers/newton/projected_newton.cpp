@@ -54,7 +54,8 @@ public:
     std::string name() const override { return "projected-newton"; }
     std::string description() const override
     {
-        return "Newton on the PSD-projected Hessian, CHOLMOD, Armijo backtracking; unconstrained problems";
+        return "Newton on the exact Hessian near the solution, PSD-projected elsewhere, CHOLMOD, Armijo; "
+               "unconstrained problems";
     }
 
     std::optional<std::string> refusal(const Nlp& nlp) const override
