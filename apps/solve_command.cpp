@@ -2,45 +2,98 @@
 #include "commands.hpp"
 #include "output_file.hpp"
 #include "result_json.hpp"
+#include "scene_run.hpp"
 
+#include "sinew/core/input_error.hpp"
 #include "sinew/problems/builtin_problems.hpp"
+#include "sinew/problems/quasistatic/builtin_scenes.hpp"
+#include "sinew/problems/quasistatic/scene_reader.hpp"
 #include "sinew/solvers/solver.hpp"
 
+#include <filesystem>
 #include <memory>
 
 namespace sinew::cli {
+namespace {
+
+bool is_scene_file(const std::string& problem)
+{
+    return std::filesystem::path(problem).extension() == ".json";
+}
+
+} // namespace
 
 void add_solve_command(CLI::App& app, int& exit_code)
 {
     CLI::App* command = app.add_subcommand(
-        "solve", "solve a problem with one solver; exit 0 when converged, 3 when not (the result is written either way)");
+        "solve", "solve a built-in problem or a scene file (scene.json) with one solver; exit 0 when converged, "
+                 "3 when not (the result is written either way)");
     struct Flags {
         std::string problem;
         std::string solver = "ipopt";
         std::string json;
+        std::string output;
+        int load_steps = 1;
         int verbosity = 1;
         SolverFlags solver_flags;
     };
     auto flags = std::make_shared<Flags>();
-    command->add_option("problem", flags->problem, "built-in problem name (see sinew list)")->required();
-    command->add_option("--solver", flags->solver, "solver name (see sinew list)")->capture_default_str();
+    command->add_option("problem", flags->problem, "built-in problem name (see sinew list) or a scene file *.json")
+        ->required();
+    command->add_option("--solver", flags->solver,
+                        "solver name (see sinew list); default: the scene's solver, ipopt for other problems");
     command->add_option("--json", flags->json, "write the result (status, x, multipliers, history, ...) to this file");
+    command->add_option("--output", flags->output,
+                        "scenes: folder for result.json and VTU files (default: the scene's output.folder, else "
+                        "<scene name>-output for a scene file; a built-in scene writes only with --output)");
+    command->add_option("--load-steps", flags->load_steps, "scenes: number of equal load steps (default: the scene's)")
+        ->check(CLI::PositiveNumber);
     command->add_option("--verbosity", flags->verbosity, "0 silent, 1 iteration table, 2 backend output")
         ->capture_default_str();
     add_solver_flags(*command, flags->solver_flags);
 
-    command->callback([flags, &exit_code] {
+    command->callback([flags, command, &exit_code] {
         SolverOptions options = to_solver_options(flags->solver_flags);
         options.verbosity = flags->verbosity;
         if (!flags->json.empty())
             write_text_file(flags->json, "");  // fail on a bad path before the solve, not after
-        const BuiltinProblem& problem = find_builtin_problem(flags->problem);
-        find_solver(flags->solver);
-        const std::unique_ptr<Nlp> nlp = problem.make();
-        const Result result = solve(*nlp, flags->solver, options);
+        const bool scene_file = is_scene_file(flags->problem);
+        const BuiltinProblem* builtin = scene_file ? nullptr : &find_builtin_problem(flags->problem);
+        const bool scene_output = scene_file || (!builtin->scene.empty() && !flags->output.empty());
+        if (!scene_output) {
+            if (command->count("--load-steps") > 0)
+                throw InputError("--load-steps applies to scenes only ('" + flags->problem + "' is not one)");
+            find_solver(flags->solver);
+            const std::unique_ptr<Nlp> nlp = builtin->make();
+            const Result result = solve(*nlp, flags->solver, options);
+            if (!flags->json.empty())
+                write_text_file(flags->json, to_json(result).dump(2) + "\n");
+            exit_code = result.status == Status::converged ? 0 : 3;
+            return;
+        }
+
+        Scene scene = scene_file ? read_scene_file(flags->problem) : make_builtin_scene(builtin->scene);
+        // Precedence: command line, then the scene's settings, then defaults.
+        SceneRunSettings settings;
+        settings.solver = command->count("--solver") > 0 ? flags->solver : scene.solver.name;
+        find_solver(settings.solver);
+        if (scene.solver.tolerance && command->count("--tol") == 0)
+            options.tolerance = *scene.solver.tolerance;
+        if (scene.solver.max_iterations && command->count("--max-iter") == 0)
+            options.max_iterations = *scene.solver.max_iterations;
+        if (settings.solver == scene.solver.name)
+            for (const auto& [key, value] : scene.solver.options)
+                options.backend.emplace(key, value);  // --option key=value wins
+        settings.options = options;
+        settings.load_steps = command->count("--load-steps") > 0 ? flags->load_steps : scene.load_steps;
+        settings.folder = !flags->output.empty()          ? flags->output
+                          : !scene.output.folder.empty() ? scene.output.folder
+                                                          : scene.name + "-output";
+        settings.vtu = scene.output.vtu;
+        const SceneRunOutcome outcome = run_scene(scene, settings);
         if (!flags->json.empty())
-            write_text_file(flags->json, to_json(result).dump(2) + "\n");
-        exit_code = result.status == Status::converged ? 0 : 3;
+            write_text_file(flags->json, to_json(outcome.last).dump(2) + "\n");
+        exit_code = outcome.converged ? 0 : 3;
     });
 }
 

@@ -12,3 +12,5 @@ add_library(TetGen::tet UNKNOWN IMPORTED)
 set_target_properties(TetGen::tet PROPERTIES IMPORTED_LOCATION "${TETGEN_LIBRARY}"
                       INTERFACE_INCLUDE_DIRECTORIES "${TETGEN_INCLUDE_DIR}")
 find_package(OpenMP REQUIRED)
+# nlohmann-json3-dev: header-only; scene files and the CLI's JSON.
+find_package(nlohmann_json 3 REQUIRED)

@@ -19,6 +19,9 @@ struct BuiltinProblem {
     std::optional<double> reference_objective;
     /// Where f* comes from (book, problem number).
     std::string reference_source;
+    /// For a built-in scene, its name (scenes/<name>.json; the CLI solves it
+    /// as a scene, with VTU output); empty for other problems.
+    std::string scene;
 };
 
 /// Every built-in problem, in a fixed order.

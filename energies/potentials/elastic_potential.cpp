@@ -33,6 +33,7 @@ public:
     virtual void add_gradient(ConstVectorRef x, VectorRef gradient) const = 0;
     virtual void add_hessian(ConstVectorRef x, Projection projection, const StencilSlots& slots,
                              VectorRef values) const = 0;
+    virtual Eigen::VectorXd stress_norms(ConstVectorRef x) const = 0;
     virtual void set_fiber(int element, const Eigen::VectorXd& fiber) = 0;
     virtual Eigen::VectorXd fiber(int element) const = 0;
     virtual void set_activation(int element, double activation) = 0;
@@ -157,6 +158,23 @@ public:
             Kinematics::lower_hessian(dPdF, rest_inverse_[e], measure_[e], H);
             add_lower_triangle(H, &slots(0, e), out);
         });
+    }
+
+    Eigen::VectorXd stress_norms(ConstVectorRef x) const override
+    {
+        const int count = num_elements();
+        Eigen::VectorXd norms(count);
+        std::exception_ptr error;
+#pragma omp parallel for schedule(static)
+        for (int e = 0; e < count; ++e)
+            guarded(error, [&] {
+                typename Model::Stress P;
+                model(e).evaluate(deformation_gradient(x, e), points_[e], &P, nullptr, Projection::none);
+                norms[e] = P.norm();
+            });
+        if (error)
+            std::rethrow_exception(error);
+        return norms;
     }
 
     void set_fiber(int element, const Eigen::VectorXd& fiber) override
@@ -334,6 +352,8 @@ void check_unit_interval(double value, int element, const char* what)
 }
 
 } // namespace
+
+Eigen::VectorXd ElasticPotential::stress_norms(ConstVectorRef x) const { return elements_->stress_norms(x); }
 
 void ElasticPotential::set_fiber(int element, const Eigen::VectorXd& fiber)
 {

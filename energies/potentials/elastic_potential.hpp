@@ -61,6 +61,9 @@ public:
     const Stencils& hessian_stencils() const override;
     void add_hessian(ConstVectorRef x, Projection projection, const StencilSlots& slots, VectorRef values) override;
 
+    /// ‖P(F_e)‖_F per element (Pa for tets and 2D triangles, N/m for
+    /// membranes): the stress invariant the VTU output shows.
+    Eigen::VectorXd stress_norms(ConstVectorRef x) const;
     /// Fiber a₀ of an element in material space, normalized here: a
     /// material_dimension vector, or for triangles in 3D also a direction in
     /// space, projected onto the element's rest plane. InputError for a zero,

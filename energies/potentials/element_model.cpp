@@ -28,7 +28,10 @@ std::string name_of(const ElementModel& model)
     return std::visit([](const auto& m) { return m ? m->name() : std::string("null"); }, model);
 }
 
-ElementModel make_element_model(ElementKind kind, const std::string& name, const ParameterValues& parameters)
+namespace {
+
+template <typename Parameters>
+ElementModel make_for_kind(ElementKind kind, const std::string& name, const Parameters& parameters)
 {
     switch (kind) {
     case ElementKind::tetrahedron: return std::shared_ptr<const Model3d>(make_model<3, 3>(name, parameters));
@@ -36,6 +39,18 @@ ElementModel make_element_model(ElementKind kind, const std::string& name, const
     case ElementKind::triangle_3d: return std::shared_ptr<const MembraneModel>(make_model<3, 2>(name, parameters));
     }
     return {};
+}
+
+} // namespace
+
+ElementModel make_element_model(ElementKind kind, const std::string& name, const ParameterValues& parameters)
+{
+    return make_for_kind(kind, name, parameters);
+}
+
+ElementModel parse_element_model(ElementKind kind, const std::string& name, const ParameterText& parameters)
+{
+    return make_for_kind(kind, name, parameters);
 }
 
 } // namespace sinew

@@ -26,5 +26,8 @@ std::string name_of(const ElementModel& model);
 /// (make_model<Rows, Cols>): InputError for an unknown name, an invalid
 /// parameter, or a model that does not take that shape.
 ElementModel make_element_model(ElementKind kind, const std::string& name, const ParameterValues& parameters);
+/// The same from parameters as text (a scene file, the command line): the
+/// catalog parses and checks them.
+ElementModel parse_element_model(ElementKind kind, const std::string& name, const ParameterText& parameters);
 
 } // namespace sinew

@@ -27,14 +27,21 @@ double GravityPotential::value(ConstVectorRef x)
 {
     double sum = 0.0;
     for (int i = 0; i < masses_.size(); ++i)
-        sum -= masses_[i] * gravity_.dot(x.segment(i * dimension_, dimension_));
+        sum -= scale_ * masses_[i] * gravity_.dot(x.segment(i * dimension_, dimension_));
     return std::isfinite(sum) ? sum : std::numeric_limits<double>::infinity();
 }
 
 void GravityPotential::add_gradient(ConstVectorRef, VectorRef gradient)
 {
     for (int i = 0; i < masses_.size(); ++i)
-        gradient.segment(i * dimension_, dimension_) -= masses_[i] * gravity_;
+        gradient.segment(i * dimension_, dimension_) -= scale_ * masses_[i] * gravity_;
+}
+
+void GravityPotential::set_scale(double scale)
+{
+    if (!std::isfinite(scale))
+        throw InputError("gravity: scale is not finite");
+    scale_ = scale;
 }
 
 } // namespace sinew

@@ -25,11 +25,15 @@ public:
     void add_hessian(ConstVectorRef, Projection, const StencilSlots&, VectorRef) override {}
 
     const Eigen::VectorXd& masses() const { return masses_; }
+    /// Multiplies g by s (load stepping; 1 = as given). InputError when s is
+    /// not finite.
+    void set_scale(double s);
 
 private:
     int dimension_;
     Eigen::VectorXd masses_;
     Eigen::VectorXd gravity_;
+    double scale_ = 1.0;
     Stencils no_stencils_;
 };
 

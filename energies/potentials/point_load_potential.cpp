@@ -32,14 +32,21 @@ double PointLoadPotential::value(ConstVectorRef x)
 {
     double sum = 0.0;
     for (std::size_t k = 0; k < nodes_.size(); ++k)
-        sum -= forces_.col(static_cast<Eigen::Index>(k)).dot(x.segment(nodes_[k] * dimension_, dimension_));
+        sum -= scale_ * forces_.col(static_cast<Eigen::Index>(k)).dot(x.segment(nodes_[k] * dimension_, dimension_));
     return std::isfinite(sum) ? sum : std::numeric_limits<double>::infinity();
 }
 
 void PointLoadPotential::add_gradient(ConstVectorRef, VectorRef gradient)
 {
     for (std::size_t k = 0; k < nodes_.size(); ++k)
-        gradient.segment(nodes_[k] * dimension_, dimension_) -= forces_.col(static_cast<Eigen::Index>(k));
+        gradient.segment(nodes_[k] * dimension_, dimension_) -= scale_ * forces_.col(static_cast<Eigen::Index>(k));
+}
+
+void PointLoadPotential::set_scale(double scale)
+{
+    if (!std::isfinite(scale))
+        throw InputError("point loads: scale is not finite");
+    scale_ = scale;
 }
 
 } // namespace sinew

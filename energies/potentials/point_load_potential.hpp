@@ -24,12 +24,16 @@ public:
     /// None: the potential is linear.
     const Stencils& hessian_stencils() const override { return no_stencils_; }
     void add_hessian(ConstVectorRef, Projection, const StencilSlots&, VectorRef) override {}
+    /// Multiplies every force by s (load stepping; 1 = as given). InputError
+    /// when s is not finite.
+    void set_scale(double s);
 
 private:
     int dimension_;
     int num_nodes_;
     std::vector<int> nodes_;
     Eigen::MatrixXd forces_;
+    double scale_ = 1.0;
     Stencils no_stencils_;
 };
 

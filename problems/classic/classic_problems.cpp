@@ -31,7 +31,8 @@ BuiltinProblem hock_schittkowski(const std::string& name, int number, const std:
             "HS " + std::to_string(number) + ": " + kind,
             std::move(make),
             published_optimum,
-            std::string(kHockSchittkowski) + ", problem " + std::to_string(number)};
+            std::string(kHockSchittkowski) + ", problem " + std::to_string(number),
+            ""};
 }
 
 } // namespace
@@ -43,9 +44,9 @@ std::vector<BuiltinProblem> classic_problems()
         "problem 21 (extended Rosenbrock); H. H. Rosenbrock, The Computer Journal 3 (1960) 175-184";
     return {
         {"rosenbrock2", "classic", "Rosenbrock: 2 variables, unconstrained",
-         [] { return std::make_unique<Rosenbrock>(2); }, 0.0, rosenbrock_source},
+         [] { return std::make_unique<Rosenbrock>(2); }, 0.0, rosenbrock_source, ""},
         {"rosenbrock1000", "classic", "extended Rosenbrock: 1000 variables, unconstrained, block-diagonal Hessian",
-         [] { return std::make_unique<Rosenbrock>(1000); }, 0.0, rosenbrock_source},
+         [] { return std::make_unique<Rosenbrock>(1000); }, 0.0, rosenbrock_source, ""},
         hock_schittkowski("hs071", 71, "4 variables, bounds, 1 equality, 1 inequality",
                           [] { return std::make_unique<Hs071>(); }, 17.0140173),
         hock_schittkowski("hs006", 6, "2 variables, 1 equality",

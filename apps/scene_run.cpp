@@ -1,0 +1,118 @@
+#include "scene_run.hpp"
+
+#include "output_file.hpp"
+#include "result_json.hpp"
+
+#include "sinew/core/input_error.hpp"
+#include "sinew/mesh/vtu_writer.hpp"
+#include "sinew/solvers/solver.hpp"
+
+#include <filesystem>
+
+namespace sinew::cli {
+namespace {
+
+/// The node-major vector v (dimension·n entries) as a dimension × n matrix.
+Eigen::MatrixXd by_node(const Eigen::VectorXd& v, int dimension)
+{
+    return Eigen::Map<const Eigen::MatrixXd>(v.data(), dimension, v.size() / dimension);
+}
+
+void write_scene_vtu(const std::string& path, Scene& scene, const Eigen::VectorXd& configuration)
+{
+    const Mesh& mesh = scene.mesh;
+    const int dimension = static_cast<int>(mesh.nodes.rows());
+    Eigen::VectorXd gradient(configuration.size());
+    scene.problem->potential().gradient(configuration, gradient);
+    const Eigen::MatrixXd positions = by_node(configuration, dimension);
+
+    VtuArrays points;
+    points["displacement"] = positions - mesh.nodes;
+    points["force"] = -by_node(gradient, dimension);  // net force −∂E/∂x
+    points["fixed"] = scene.fixed_flags().transpose();
+
+    const int count = mesh.num_elements();
+    const int fiber_rows = material_dimension(mesh.kind);
+    Eigen::MatrixXd group(1, count), activation(1, count), damage(1, count), fiber(fiber_rows, count);
+    for (int e = 0; e < count; ++e) {
+        group(0, e) = mesh.element_groups[static_cast<size_t>(e)];
+        activation(0, e) = scene.elastic->activation(e);
+        damage(0, e) = scene.elastic->damage(e);
+        fiber.col(e) = scene.elastic->fiber(e);
+    }
+    VtuArrays cells;
+    cells["group"] = group;
+    cells["activation"] = activation;
+    cells["damage"] = damage;
+    cells["fiber"] = fiber;
+    cells["stress_norm"] = scene.elastic->stress_norms(configuration).transpose();
+    write_vtu(path, mesh, positions, points, cells);
+}
+
+nlohmann::json step_summary(int step, double load_factor, const Result& result)
+{
+    return {{"step", step},
+            {"load_factor", load_factor},
+            {"status", to_string(result.status)},
+            {"iterations", result.iterations},
+            {"objective", number(result.objective)},
+            {"kkt_residual", number(result.kkt_residual)},
+            {"time_s", number(result.time_s)}};
+}
+
+} // namespace
+
+SceneRunOutcome run_scene(Scene& scene, const SceneRunSettings& settings)
+{
+    std::error_code error;
+    std::filesystem::create_directories(settings.folder, error);
+    if (error)
+        throw InputError("cannot create output folder '" + settings.folder + "': " + error.message());
+    const std::string folder = settings.folder + "/";
+    write_text_file(folder + "result.json", "");  // fail on an unwritable folder before the solve
+
+    QuasistaticProblem& problem = *scene.problem;
+    nlohmann::json steps = nlohmann::json::array();
+    nlohmann::json vtu_files = nlohmann::json::array();
+    Result result;
+    double total_time = 0.0;
+    int total_iterations = 0;
+    const int n = settings.load_steps;
+    for (int k = 1; k <= n; ++k) {
+        const double s = static_cast<double>(k) / n;
+        scene.apply_load_factor(s);
+        result = solve(problem, settings.solver, settings.options);
+        total_time += result.time_s;
+        total_iterations += result.iterations;
+        steps.push_back(step_summary(k, s, result));
+        const Eigen::VectorXd configuration = problem.full_configuration(result.x);
+        if (settings.vtu == VtuOutput::every_step && n > 1) {
+            const std::string name = "step_" + std::to_string(k) + ".vtu";
+            write_scene_vtu(folder + name, scene, configuration);
+            vtu_files.push_back(name);
+        }
+        if (result.status != Status::converged || k == n) {
+            if (settings.vtu != VtuOutput::none) {
+                write_scene_vtu(folder + "result.vtu", scene, configuration);
+                vtu_files.push_back("result.vtu");
+            }
+            break;
+        }
+        problem.set_starting_configuration(configuration);
+    }
+    const bool converged = result.status == Status::converged && static_cast<int>(steps.size()) == n;
+    const nlohmann::json out = {{"scene", scene.name},
+                                {"description", scene.description},
+                                {"solver", settings.solver},
+                                {"load_steps", n},
+                                {"converged", converged},
+                                {"total_iterations", total_iterations},
+                                {"total_time_s", total_time},
+                                {"steps", steps},
+                                {"vtu", vtu_files},
+                                {"result", to_json(result)}};
+    write_text_file(folder + "result.json", out.dump(2) + "\n");
+    return {converged, result};
+}
+
+} // namespace sinew::cli

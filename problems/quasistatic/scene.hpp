@@ -1,0 +1,83 @@
+#pragma once
+#include "sinew/energies/potentials/elastic_potential.hpp"
+#include "sinew/energies/potentials/gravity_potential.hpp"
+#include "sinew/energies/potentials/point_load_potential.hpp"
+#include "sinew/mesh/mesh.hpp"
+#include "sinew/problems/quasistatic/quasistatic_problem.hpp"
+
+#include <Eigen/Core>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sinew {
+
+/// The motion a Dirichlet set reaches at load factor 1, x = M X + t, and how
+/// it is scaled for a load step s ∈ [0, 1]: a rotation R(θ) about a centre c
+/// turns by s·θ (x = R(sθ)(X − c) + c + s·t); a general map blends linearly,
+/// M(s) = I + s(M − I), t(s) = s·t. s = 0 holds the set at rest.
+struct PrescribedMotion {
+    bool rotation = false;
+    Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();  ///< rotation axis (3D), unit
+    double angle = 0.0;                               ///< θ, radians
+    Eigen::VectorXd center;                           ///< c, m
+    Eigen::MatrixXd map;                              ///< M, for a general map
+    Eigen::VectorXd translation;                      ///< t, m
+
+    /// M(s) and t(s) in `dimension` (2 or 3) dimensions.
+    Eigen::MatrixXd map_at(double s, int dimension) const;
+    Eigen::VectorXd translation_at(double s, int dimension) const;
+};
+
+/// How a scene asks to be solved. Plain data: problems/ knows no solver; the
+/// CLI turns this into solver options (unset fields keep the solver's
+/// defaults or the command line's values).
+struct SceneSolverSettings {
+    std::string name = "projected-newton";
+    std::optional<double> tolerance;
+    std::optional<int> max_iterations;
+    std::map<std::string, std::string> options;  ///< backend options, as text
+};
+
+/// Which VTU files a solve writes into the output folder.
+enum class VtuOutput {
+    none,        ///< result.json only
+    final,       ///< result.vtu: the final configuration (default)
+    every_step,  ///< also step_k.vtu after each load step
+};
+
+struct SceneOutput {
+    std::string folder;  ///< resolved against the scene file's folder; empty: the CLI decides
+    VtuOutput vtu = VtuOutput::final;
+};
+
+/// A quasistatic scene built from its description (scene_reader.hpp): the
+/// mesh, the potentials, the NLP, and what a load factor s scales. Load
+/// stepping solves at s = k/N, k = 1…N, each step starting from the previous
+/// solution; s scales gravity, point loads, the prescribed motions of the
+/// Dirichlet sets and the muscle activations together.
+struct Scene {
+    std::string name;
+    std::string description;
+    Mesh mesh;
+    std::shared_ptr<ElasticPotential> elastic;
+    std::shared_ptr<GravityPotential> gravity;     ///< null when the scene has no gravity
+    std::shared_ptr<PointLoadPotential> loads;     ///< null when it has no point loads
+    std::unique_ptr<QuasistaticProblem> problem;
+    std::vector<PrescribedMotion> motions;         ///< one per Dirichlet set of `problem`
+    Eigen::VectorXd target_activations;            ///< α_e at s = 1, per element
+    int load_steps = 1;                            ///< N
+    SceneSolverSettings solver;
+    SceneOutput output;
+    double size = 1.0;  ///< the diagonal of the rest mesh's bounding box, m
+
+    /// Sets every scaled quantity to its value at load factor s (above).
+    void apply_load_factor(double s);
+    /// The nodes of every Dirichlet set, flagged: 1 prescribed, 0 free.
+    Eigen::VectorXd fixed_flags() const;
+};
+
+} // namespace sinew

@@ -1,0 +1,474 @@
+#include "sinew/problems/quasistatic/scene_reader.hpp"
+
+#include "sinew/core/input_error.hpp"
+#include "sinew/energies/potentials/element_model.hpp"
+#include "sinew/energies/potentials/lumped_mass.hpp"
+#include "sinew/energies/potentials/obstacle_penalty_potential.hpp"
+#include "sinew/mesh/box_tets.hpp"
+#include "sinew/mesh/fusiform_muscle.hpp"
+#include "sinew/mesh/read_mesh.hpp"
+#include "sinew/mesh/rectangle_triangles.hpp"
+#include "sinew/mesh/tetrahedralize_surface.hpp"
+#include "sinew/problems/quasistatic/node_selection.hpp"
+#include "sinew/problems/quasistatic/strict_json.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace sinew {
+namespace {
+
+/// Generators refuse more elements than this (a typo in "cells" should be an
+/// error, not an out-of-memory crash).
+constexpr double kMaxGeneratedElements = 2e7;
+
+/// Runs `work`, prefixing any InputError it throws with the cursor's place.
+template <typename Work>
+auto at_place(const JsonCursor& cursor, const Work& work) -> decltype(work())
+{
+    try {
+        return work();
+    } catch (const InputError& e) {
+        throw InputError(cursor.where() + ": " + e.what());
+    }
+}
+
+std::string resolve_path(const std::string& path, const std::string& base_folder)
+{
+    const std::filesystem::path p(path);
+    if (p.is_absolute() || base_folder.empty())
+        return path;
+    return (std::filesystem::path(base_folder) / p).string();
+}
+
+Eigen::Vector3i cell_counts(const JsonCursor& cells, int dimension, int& total)
+{
+    Eigen::Vector3i n = Eigen::Vector3i::Ones();
+    if (cells.size() != static_cast<size_t>(dimension))
+        cells.fail("expected " + std::to_string(dimension) + " cell counts");
+    double product = 1.0;
+    for (int k = 0; k < dimension; ++k) {
+        n[k] = cells[static_cast<size_t>(k)].integer_in(1, 100000);
+        product *= n[k];
+    }
+    if (product * (dimension == 3 ? 6.0 : 2.0) > kMaxGeneratedElements)
+        cells.fail("more than 2e7 elements");
+    total = static_cast<int>(product);
+    return n;
+}
+
+Mesh generated_mesh(const JsonCursor& m)
+{
+    const std::string generator = m.at("generator").string();
+    int total = 0;
+    if (generator == "box") {
+        m.expect_object({"generator", "lower", "upper", "cells"});
+        const Eigen::Vector3i n = cell_counts(m.at("cells"), 3, total);
+        const Eigen::Vector3d lower = m.at("lower").vector(3), upper = m.at("upper").vector(3);
+        return at_place(m, [&] { return box_tets(lower, upper, n[0], n[1], n[2]); });
+    }
+    if (generator == "rectangle" || generator == "sheet") {
+        m.expect_object({"generator", "lower", "upper", "cells"});
+        const Eigen::Vector3i n = cell_counts(m.at("cells"), 2, total);
+        const Eigen::Vector2d lower = m.at("lower").vector(2), upper = m.at("upper").vector(2);
+        return at_place(m, [&] {
+            return generator == "rectangle" ? rectangle_triangles(lower, upper, n[0], n[1])
+                                            : sheet_triangles(lower, upper, n[0], n[1]);
+        });
+    }
+    if (generator == "fusiform-muscle") {
+        m.expect_object({"generator", "length", "belly_radius", "tendon_radius", "tendon_length", "rings",
+                         "belly_layers", "tendon_layers"});
+        FusiformMuscleShape shape;
+        auto read_length = [&](const char* key, double& value) {
+            if (auto v = m.find(key))
+                value = v->number();
+        };
+        auto read_count = [&](const char* key, int& value) {
+            if (auto v = m.find(key))
+                value = v->integer_in(1, 1000);
+        };
+        read_length("length", shape.length);
+        read_length("belly_radius", shape.belly_radius);
+        read_length("tendon_radius", shape.tendon_radius);
+        read_length("tendon_length", shape.tendon_length);
+        read_count("rings", shape.rings);
+        read_count("belly_layers", shape.belly_layers);
+        read_count("tendon_layers", shape.tendon_layers);
+        const double elements = 6.0 * shape.rings * shape.rings * 3.0 * (shape.belly_layers + 2.0 * shape.tendon_layers);
+        if (elements > kMaxGeneratedElements)
+            m.fail("more than 2e7 elements");
+        return at_place(m, [&] { return fusiform_muscle(shape); });
+    }
+    m.at("generator").fail("unknown generator '" + generator +
+                           "'; valid generators: box, rectangle, sheet, fusiform-muscle");
+}
+
+Mesh scene_mesh(const JsonCursor& m, const std::string& base_folder)
+{
+    if (m.has("file")) {
+        m.expect_object({"file"});
+        const std::string path = resolve_path(m.at("file").string(), base_folder);
+        return at_place(m.at("file"), [&] { return read_mesh(path); });
+    }
+    if (m.has("tetrahedralize")) {
+        m.expect_object({"tetrahedralize", "max_volume", "max_radius_edge_ratio"});
+        TetrahedralizeOptions options;
+        if (auto v = m.find("max_volume"))
+            options.max_volume = v->number_in(0.0, HUGE_VAL);
+        if (auto v = m.find("max_radius_edge_ratio"))
+            options.max_radius_edge_ratio = v->number_in(0.0, HUGE_VAL);
+        const std::string path = resolve_path(m.at("tetrahedralize").string(), base_folder);
+        return at_place(m, [&] { return tetrahedralize_obj(path, options); });
+    }
+    if (m.has("generator"))
+        return generated_mesh(m);
+    m.expect_object({"file", "tetrahedralize", "generator"});
+    m.fail("expected one of the keys file, tetrahedralize, generator");
+}
+
+NodeSelection node_selection(const JsonCursor& s, int dimension)
+{
+    s.expect_object({"all", "nodes", "box", "plane", "half_space", "group"});
+    if (s.keys().size() != 1)
+        s.fail("expected exactly one of all, nodes, box, plane, half_space, group");
+    if (auto all = s.find("all")) {
+        if (!all->boolean())
+            all->fail("must be true");
+        return AllNodes{};
+    }
+    if (auto list = s.find("nodes")) {
+        NodeList out;
+        for (size_t i = 0; i < list->size(); ++i)
+            out.nodes.push_back((*list)[i].integer_in(0, std::numeric_limits<int>::max()));
+        return out;
+    }
+    if (auto box = s.find("box")) {
+        box->expect_object({"lower", "upper"});
+        return NodesInBox{box->at("lower").vector(dimension), box->at("upper").vector(dimension)};
+    }
+    const bool on_plane = s.has("plane");
+    if (on_plane || s.has("half_space")) {
+        const JsonCursor p = s.at(on_plane ? "plane" : "half_space");
+        p.expect_object({"point", "normal"});
+        const Eigen::VectorXd point = p.at("point").vector(dimension), normal = p.at("normal").vector(dimension);
+        if (on_plane)
+            return NodesOnPlane{point, normal};
+        return NodesInHalfSpace{point, normal};
+    }
+    return NodesOfGroup{s.at("group").string()};
+}
+
+std::vector<int> selected_nodes(const JsonCursor& s, const Scene& scene, double tolerance)
+{
+    const NodeSelection selection = node_selection(s, static_cast<int>(scene.mesh.nodes.rows()));
+    return at_place(s, [&] { return select_nodes(scene.mesh, selection, tolerance); });
+}
+
+ParameterText parameter_text(const JsonCursor& p)
+{
+    ParameterText text;
+    for (const std::string& key : p.keys()) {
+        const JsonCursor value = p.at(key);
+        if (value.is_string())
+            text[key] = value.string();
+        else {
+            std::ostringstream number;
+            number.precision(17);
+            number << value.number();
+            text[key] = number.str();
+        }
+    }
+    return text;
+}
+
+struct Material {
+    ElementModel model;
+    double density = 0.0;
+    std::optional<Eigen::VectorXd> fiber;  ///< none: the mesh's fibers (or x̂)
+    double activation = 0.0;
+    double damage = 0.0;
+};
+
+Material material(const JsonCursor& m, ElementKind kind)
+{
+    m.expect_object({"group", "model", "parameters", "density", "fiber", "activation", "damage"});
+    Material out;
+    const ParameterText parameters = m.has("parameters") ? parameter_text(m.at("parameters")) : ParameterText{};
+    const std::string model = m.at("model").string();
+    out.model = at_place(m, [&] { return parse_element_model(kind, model, parameters); });
+    if (auto v = m.find("density"))
+        out.density = v->number_in(0.0, HUGE_VAL);
+    if (auto v = m.find("fiber"))
+        out.fiber = v->vector();
+    if (auto v = m.find("activation"))
+        out.activation = v->number_in(0.0, 1.0);
+    if (auto v = m.find("damage"))
+        out.damage = v->number_in(0.0, 1.0);
+    return out;
+}
+
+/// One material per mesh group: a material with "group" takes that group,
+/// one without takes every group no other material names.
+std::vector<Material> group_materials(const JsonCursor& list, const Mesh& mesh)
+{
+    const size_t groups = mesh.group_names.size();
+    std::vector<std::optional<Material>> assigned(groups);
+    std::optional<Material> fallback;
+    if (list.size() == 0)
+        list.fail("expected at least one material");
+    for (size_t i = 0; i < list.size(); ++i) {
+        const JsonCursor m = list[i];
+        Material made = material(m, mesh.kind);
+        if (auto group = m.find("group")) {
+            const std::string name = group->string();
+            const auto found = std::find(mesh.group_names.begin(), mesh.group_names.end(), name);
+            if (found == mesh.group_names.end()) {
+                std::string names;
+                for (const auto& g : mesh.group_names)
+                    names += (names.empty() ? "" : ", ") + g;
+                group->fail("the mesh has no group '" + name + "'; its groups: " + names);
+            }
+            auto& slot = assigned[static_cast<size_t>(found - mesh.group_names.begin())];
+            if (slot)
+                group->fail("group '" + name + "' has a material already");
+            slot = std::move(made);
+        } else {
+            if (fallback)
+                m.fail("a second material without \"group\"; only one may apply to the remaining groups");
+            fallback = std::move(made);
+        }
+    }
+    std::vector<Material> out;
+    for (size_t g = 0; g < groups; ++g) {
+        if (!assigned[g] && !fallback)
+            list.fail("group '" + mesh.group_names[g] + "' has no material");
+        out.push_back(assigned[g] ? *assigned[g] : *fallback);
+    }
+    return out;
+}
+
+PrescribedMotion motion(const JsonCursor& b, int dimension)
+{
+    PrescribedMotion out;
+    out.map = Eigen::MatrixXd::Identity(dimension, dimension);
+    out.translation = Eigen::VectorXd::Zero(dimension);
+    out.center = Eigen::VectorXd::Zero(dimension);
+    if (b.has("rotation") && b.has("map"))
+        b.fail("give either rotation or map, not both");
+    if (auto r = b.find("rotation")) {
+        if (dimension == 3)
+            r->expect_object({"axis", "angle_deg", "center"});
+        else
+            r->expect_object({"angle_deg", "center"});
+        out.rotation = true;
+        out.angle = r->at("angle_deg").number() * M_PI / 180.0;
+        if (dimension == 3) {
+            const Eigen::Vector3d axis = r->at("axis").vector(3);
+            if (!(axis.norm() > 0.0))
+                r->at("axis").fail("axis must not be zero");
+            out.axis = axis.normalized();
+        }
+        if (auto c = r->find("center"))
+            out.center = c->vector(dimension);
+    }
+    if (auto m = b.find("map"))
+        out.map = m->matrix(dimension, dimension);
+    if (auto t = b.find("translation"))
+        out.translation = t->vector(dimension);
+    return out;
+}
+
+std::string read_text_file(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw InputError(path + ": cannot read file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+} // namespace
+
+Scene parse_scene(const std::string& text, const std::string& document, const std::string& base_folder)
+{
+    const nlohmann::json json = parse_json_text(text, document);
+    const JsonCursor root(json, document);
+    root.expect_object({"name", "description", "mesh", "materials", "gravity", "boundary", "loads", "obstacles",
+                        "dirichlet", "load_steps", "solver", "output"});
+    Scene scene;
+    scene.name = root.has("name") ? root.at("name").string()
+                                  : std::filesystem::path(document).stem().string();
+    if (auto d = root.find("description"))
+        scene.description = d->string();
+
+    scene.mesh = scene_mesh(root.at("mesh"), base_folder);
+    const Mesh& mesh = scene.mesh;
+    const int dimension = static_cast<int>(mesh.nodes.rows());
+    const Eigen::VectorXd extent = mesh.nodes.rowwise().maxCoeff() - mesh.nodes.rowwise().minCoeff();
+    scene.size = extent.norm();
+    const double tolerance = 1e-9 * scene.size;
+
+    // Materials (the elastic potential) and their per-element data.
+    const JsonCursor material_list = root.at("materials");
+    const std::vector<Material> materials = group_materials(material_list, mesh);
+    std::vector<ElementModel> models;
+    std::vector<double> densities;
+    for (const Material& m : materials) {
+        models.push_back(m.model);
+        densities.push_back(m.density);
+    }
+    scene.elastic = at_place(root.at("mesh"), [&] { return std::make_shared<ElasticPotential>(mesh, models); });
+    scene.target_activations.resize(mesh.num_elements());
+    for (int e = 0; e < mesh.num_elements(); ++e) {
+        const Material& m = materials[static_cast<size_t>(mesh.element_groups[static_cast<size_t>(e)])];
+        if (m.fiber)
+            at_place(material_list, [&] { scene.elastic->set_fiber(e, *m.fiber); });
+        scene.elastic->set_damage(e, m.damage);
+        scene.target_activations[e] = m.activation;
+    }
+    std::vector<std::shared_ptr<Potential>> terms{scene.elastic};
+
+    if (auto g = root.find("gravity")) {
+        const Eigen::VectorXd gravity = g->vector(dimension);
+        scene.gravity = at_place(*g, [&] {
+            return std::make_shared<GravityPotential>(dimension, lumped_masses(mesh, densities), gravity);
+        });
+        terms.push_back(scene.gravity);
+    }
+
+    if (auto list = root.find("loads")) {
+        std::vector<int> nodes;
+        std::vector<Eigen::VectorXd> forces;
+        for (size_t i = 0; i < list->size(); ++i) {
+            const JsonCursor l = (*list)[i];
+            l.expect_object({"select", "force_per_node", "total_force"});
+            const std::vector<int> selected = selected_nodes(l.at("select"), scene, tolerance);
+            if (l.has("force_per_node") == l.has("total_force"))
+                l.fail("give exactly one of force_per_node, total_force");
+            const bool per_node = l.has("force_per_node");
+            Eigen::VectorXd f = l.at(per_node ? "force_per_node" : "total_force").vector(dimension);
+            if (!per_node)
+                f /= static_cast<double>(selected.size());
+            for (int node : selected) {
+                nodes.push_back(node);
+                forces.push_back(f);
+            }
+        }
+        Eigen::MatrixXd force_matrix(dimension, static_cast<Eigen::Index>(forces.size()));
+        for (size_t k = 0; k < forces.size(); ++k)
+            force_matrix.col(static_cast<Eigen::Index>(k)) = forces[k];
+        scene.loads = std::make_shared<PointLoadPotential>(dimension, mesh.num_nodes(), nodes, force_matrix);
+        terms.push_back(scene.loads);
+    }
+
+    if (auto list = root.find("obstacles")) {
+        for (size_t i = 0; i < list->size(); ++i) {
+            const JsonCursor o = (*list)[i];
+            o.expect_object({"plane", "sphere", "stiffness", "select"});
+            if (o.has("plane") == o.has("sphere"))
+                o.fail("give exactly one of plane, sphere");
+            AnalyticObstacle obstacle;
+            if (auto p = o.find("plane")) {
+                p->expect_object({"point", "normal"});
+                const Eigen::VectorXd point = p->at("point").vector(dimension), normal = p->at("normal").vector(dimension);
+                obstacle = PlaneObstacle{normal, normal.dot(point)};  // n·x ≥ n·p
+            } else {
+                const JsonCursor s = o.at("sphere");
+                s.expect_object({"center", "radius"});
+                obstacle = SphereObstacle{s.at("center").vector(dimension), s.at("radius").number()};
+            }
+            const double stiffness = o.at("stiffness").number();
+            const std::vector<int> nodes = o.has("select") ? selected_nodes(o.at("select"), scene, tolerance)
+                                                           : std::vector<int>{};
+            terms.push_back(at_place(o, [&] {
+                return std::make_shared<ObstaclePenaltyPotential>(dimension, mesh.num_nodes(), obstacle, stiffness,
+                                                                  nodes);
+            }));
+        }
+    }
+
+    std::vector<DirichletSet> sets;
+    if (auto list = root.find("boundary")) {
+        for (size_t i = 0; i < list->size(); ++i) {
+            const JsonCursor b = (*list)[i];
+            b.expect_object({"name", "select", "rotation", "map", "translation"});
+            PrescribedMotion m = motion(b, dimension);
+            DirichletSet set;
+            set.name = b.has("name") ? b.at("name").string() : "boundary[" + std::to_string(i) + "]";
+            set.nodes = selected_nodes(b.at("select"), scene, tolerance);
+            set.map = m.map_at(1.0, dimension);
+            set.translation = m.translation_at(1.0, dimension);
+            sets.push_back(std::move(set));
+            scene.motions.push_back(std::move(m));
+        }
+    }
+
+    QuasistaticOptions options;
+    options.name = scene.name;
+    if (auto d = root.find("dirichlet")) {
+        const std::string strategy = d->string();
+        if (strategy == "eliminate")
+            options.dirichlet = DirichletStrategy::eliminate;
+        else if (strategy == "equality_constraints")
+            options.dirichlet = DirichletStrategy::equality_constraints;
+        else
+            d->fail("unknown strategy '" + strategy + "'; valid: eliminate, equality_constraints");
+    }
+    if (auto n = root.find("load_steps"))
+        scene.load_steps = n->integer_in(1, 100000);
+
+    if (auto s = root.find("solver")) {
+        s->expect_object({"name", "tolerance", "max_iterations", "options"});
+        if (auto v = s->find("name"))
+            scene.solver.name = v->string();
+        if (auto v = s->find("tolerance"))
+            scene.solver.tolerance = v->number_in(1e-300, HUGE_VAL);
+        if (auto v = s->find("max_iterations"))
+            scene.solver.max_iterations = v->integer_in(1, std::numeric_limits<int>::max());
+        if (auto v = s->find("options"))
+            scene.solver.options = parameter_text(*v);
+    }
+    if (auto o = root.find("output")) {
+        o->expect_object({"folder", "vtu"});
+        if (auto v = o->find("folder"))
+            scene.output.folder = resolve_path(v->string(), base_folder);
+        if (auto v = o->find("vtu")) {
+            const std::string vtu = v->string();
+            if (vtu == "none")
+                scene.output.vtu = VtuOutput::none;
+            else if (vtu == "final")
+                scene.output.vtu = VtuOutput::final;
+            else if (vtu == "every_step")
+                scene.output.vtu = VtuOutput::every_step;
+            else
+                v->fail("unknown value '" + vtu + "'; valid: none, final, every_step");
+        }
+    }
+
+    auto total = at_place(root, [&] { return std::make_shared<TotalPotential>(terms); });
+    const JsonCursor where = root.has("boundary") ? root.at("boundary") : root;
+    scene.problem = at_place(where, [&] {
+        return std::make_unique<QuasistaticProblem>(mesh.nodes, total, sets, options);
+    });
+    scene.apply_load_factor(1.0);
+    return scene;
+}
+
+std::string scene_description(const std::string& text)
+{
+    const nlohmann::json json = parse_json_text(text, "scene");
+    const auto found = json.find("description");
+    return found != json.end() && found->is_string() ? found->get<std::string>() : std::string();
+}
+
+Scene read_scene_file(const std::string& path)
+{
+    const std::string text = read_text_file(path);
+    return parse_scene(text, path, std::filesystem::path(path).parent_path().string());
+}
+
+} // namespace sinew

@@ -1,0 +1,123 @@
+// `sinew solve scene.json`: result.json and VTU files in the output folder,
+// load steps, exit codes 0 / 2 / 3, and scene errors as one line.
+#include "run_sinew.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace sinew::test;
+
+namespace {
+
+/// A small Neo-Hookean beam clamped at x = 0 with its end pulled 0.2 m.
+std::string write_beam_scene(const std::string& file, const std::string& extra = "")
+{
+    const std::string path = scratch(file);
+    std::ofstream(path) << R"({
+  "name": "cli-beam",
+  "mesh": {"generator": "box", "lower": [0, 0, 0], "upper": [1, 0.25, 0.25], "cells": [8, 2, 2]},
+  "materials": [{"model": "stable-neo-hookean", "parameters": {"mu": 1e4, "lambda": 1e5}, "density": 1000}],
+  "gravity": [0, 0, -9.81],
+  "boundary": [
+    {"name": "clamp", "select": {"plane": {"point": [0, 0, 0], "normal": [1, 0, 0]}}},
+    {"name": "end", "select": {"plane": {"point": [1, 0, 0], "normal": [1, 0, 0]}}, "translation": [0.2, 0, 0]}
+  ])" + extra + "\n}\n";
+    return path;
+}
+
+} // namespace
+
+TEST_CASE("sinew solve scene.json writes result.json and result.vtu into the output folder")
+{
+    const std::string scene = write_beam_scene("beam_scene.json");
+    const std::string folder = scratch("beam_out");
+    std::filesystem::remove_all(folder);
+    const std::string solver = GENERATE("projected-newton", "ipopt");
+    CAPTURE(solver);
+    const Run run = run_sinew("solve '" + scene + "' --solver " + solver + " --output '" + folder +
+                              "' --verbosity 0");
+    CAPTURE(run.out, run.err);
+    REQUIRE(run.exit_code == 0);
+    const auto r = read_json(folder + "/result.json");
+    CHECK(r["scene"] == "cli-beam");
+    CHECK(r["solver"] == solver);
+    CHECK(r["converged"] == true);
+    CHECK(r["load_steps"] == 1);
+    CHECK(r["steps"].size() == 1);
+    CHECK(r["result"]["status"] == "converged");
+    CHECK(r["result"]["x"].size() == 3 * (9 * 3 * 3 - 2 * 3 * 3));  // the nodes off the two end faces
+    const std::string vtu = slurp(folder + "/result.vtu");
+    for (const char* array : {"displacement", "force", "fixed", "group", "activation", "fiber", "damage",
+                              "stress_norm"})
+        CHECK(vtu.find(std::string("Name=\"") + array + "\"") != std::string::npos);
+}
+
+TEST_CASE("load steps solve k/N of the load in turn and write a VTU per step on request")
+{
+    const std::string scene = write_beam_scene("beam_steps.json", R"(,
+  "load_steps": 2,
+  "output": {"folder": "beam_steps_out", "vtu": "every_step"})");
+    const std::string folder = scratch("beam_steps_out");  // relative to the scene file's folder
+    std::filesystem::remove_all(folder);
+    const Run run = run_sinew("solve '" + scene + "' --load-steps 3 --verbosity 0");
+    CAPTURE(run.out, run.err);
+    REQUIRE(run.exit_code == 0);
+    const auto r = read_json(folder + "/result.json");
+    CHECK(r["solver"] == "projected-newton");  // the scene's default
+    CHECK(r["load_steps"] == 3);                // the command line wins over the scene
+    REQUIRE(r["steps"].size() == 3);
+    CHECK(r["steps"][0]["load_factor"].get<double>() == Approx(1.0 / 3.0));
+    CHECK(r["steps"][2]["load_factor"] == 1.0);
+    for (const char* file : {"step_1.vtu", "step_2.vtu", "step_3.vtu", "result.vtu"})
+        CHECK(std::filesystem::exists(folder + "/" + file));
+}
+
+TEST_CASE("a scene solve that does not converge still writes its result and exits 3")
+{
+    const std::string scene = write_beam_scene("beam_short.json");
+    const std::string folder = scratch("beam_short_out");
+    std::filesystem::remove_all(folder);
+    const Run run = run_sinew("solve '" + scene + "' --max-iter 1 --output '" + folder + "' --verbosity 0");
+    CHECK(run.exit_code == 3);
+    const auto r = read_json(folder + "/result.json");
+    CHECK(r["converged"] == false);
+    CHECK(r["result"]["status"] == "max_iterations");
+    CHECK(std::filesystem::exists(folder + "/result.vtu"));
+}
+
+TEST_CASE("a built-in scene writes its folder only when asked")
+{
+    const std::string folder = scratch("plate_out");
+    std::filesystem::remove_all(folder);
+    const Run run = run_sinew("solve qr-plate --solver projected-newton --verbosity 0 --output '" + folder + "'");
+    CAPTURE(run.err);
+    CHECK(run.exit_code == 0);
+    CHECK(read_json(folder + "/result.json")["scene"] == "qr-plate");
+    CHECK(std::filesystem::exists(folder + "/result.vtu"));
+}
+
+TEST_CASE("bad scene input gives one clear line and exit code 2")
+{
+    struct Case {
+        std::string extra;     ///< appended to the beam scene
+        const char* expected;  ///< a piece of the one-line message
+    };
+    const Case c = GENERATE(Case{",\n  \"speed\": 3", "speed: unknown key"},
+                            Case{",\n  \"load_steps\": -1", "load_steps"},
+                            Case{",\n  \"solver\": {\"name\": \"newton\"}", "valid solvers"},
+                            Case{",\n  \"solver\": {\"options\": {\"hessian\": \"magic\"}}", "hessian"},
+                            Case{"\n  ,", "invalid JSON"});
+    const std::string scene = write_beam_scene("beam_bad.json", c.extra);
+    const Run run = run_sinew("solve '" + scene + "' --verbosity 0 --output '" + scratch("beam_bad_out") + "'");
+    CAPTURE(c.extra, run.out, run.err);
+    CHECK(run.exit_code == 2);
+    CHECK(lines(run.err) == 1);
+    CHECK(run.err.find(c.expected) != std::string::npos);
+}
+
+TEST_CASE("a missing scene file is one line and exit code 2")
+{
+    const Run run = run_sinew("solve /no/such/scene.json");
+    CHECK(run.exit_code == 2);
+    CHECK(lines(run.err) == 1);
+    CHECK(run.err.find("/no/such/scene.json") != std::string::npos);
+}
