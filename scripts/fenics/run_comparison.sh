@@ -1,0 +1,108 @@
+#!/usr/bin/env bash
+# Issue 4: wall time of sinew's projected Newton against legacy FEniCS on the
+# cantilever scenes. For each size (c = 12: 52k tets, c = 19: 206k tets),
+# straight and twisted: first sinew, then scripts/fenics/cantilever.py; then
+# one markdown table. See README.md in this directory.
+#
+#   scripts/fenics/run_comparison.sh [OUTDIR]
+#
+# Environment: SINEW (default build/apps/sinew of this checkout), PYTHON (default
+# /usr/bin/python3, the interpreter python3-dolfin installs into), CELLS
+# (default "12 19"), FENICS_ARGS (extra arguments for cantilever.py).
+# Raw outputs (sinew's result JSON and iteration table, the FEniCS JSON line
+# and log) go to OUTDIR (default ./fenics-comparison-YYYYmmdd-HHMMSS).
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+SINEW="${SINEW:-$here/../../build/apps/sinew}"
+PYTHON="${PYTHON:-/usr/bin/python3}"
+CELLS="${CELLS:-12 19}"
+FENICS_ARGS="${FENICS_ARGS:-}"
+out="${1:-fenics-comparison-$(date +%Y%m%d-%H%M%S)}"
+mkdir -p "$out"
+
+"$PYTHON" -c 'import dolfin' 2>/dev/null || { echo "dolfin not importable by $PYTHON (apt-get install -y python3-dolfin)" >&2; exit 2; }
+[ -x "$SINEW" ] || { echo "no sinew binary at $SINEW" >&2; exit 2; }
+
+loadavg() { cut -d' ' -f1 /proc/loadavg; }
+
+# Warm FEniCS' JIT cache (~/.cache/fenics) so that no timed run compiles forms
+# (the forms do not depend on the mesh size or the scene variant).
+echo "warming the FEniCS JIT cache ..." >&2
+"$PYTHON" "$here/cantilever.py" --cells 6 --compile-only 2> "$out/jit-warmup.log"
+
+for c in $CELLS; do
+    case "$c" in 6) k=6k ;; 12) k=52k ;; 19) k=206k ;; *) echo "cells must be 6, 12 or 19" >&2; exit 2 ;; esac
+    for variant in straight twisted; do
+        if [ "$variant" = twisted ]; then scene="twisted-cantilever-$k"; flag=--twisted; else scene="cantilever-$k"; flag=; fi
+        echo "== $scene: sinew (load $(loadavg))" >&2
+        echo "$(loadavg)" > "$out/$scene.load-before-sinew"
+        status=0
+        "$SINEW" solve "$scene" --solver projected-newton --json "$out/$scene.sinew.json" \
+            > "$out/$scene.sinew.log" 2>&1 || status=$?
+        echo "$status" > "$out/$scene.sinew.status"
+        tail -n 1 "$out/$scene.sinew.log" >&2
+        echo "== $scene: FEniCS (load $(loadavg))" >&2
+        echo "$(loadavg)" > "$out/$scene.load-before-fenics"
+        status=0
+        # shellcheck disable=SC2086
+        "$PYTHON" "$here/cantilever.py" --cells "$c" $flag $FENICS_ARGS \
+            --save-displacement "$out/$scene.fenics-u.npy" \
+            > "$out/$scene.fenics.json" 2> "$out/$scene.fenics.log" || status=$?
+        echo "$status" > "$out/$scene.fenics.status"
+        grep -v 'JIT' "$out/$scene.fenics.log" >&2 || true
+    done
+done
+
+"$PYTHON" - "$out" $CELLS <<'EOF'
+import json, os, sys
+out, cells = sys.argv[1], sys.argv[2:]
+size = {"6": "6k", "12": "52k", "19": "206k"}
+def load(path):
+    try:
+        with open(path) as f:
+            text = f.read().strip()
+        if not text:
+            return None
+        try:
+            return json.loads(text)                   # sinew's result file
+        except ValueError:
+            return json.loads(text.splitlines()[-1])  # cantilever.py: one JSON line
+    except (OSError, ValueError):
+        return None
+def read(path):
+    try:
+        with open(path) as f:
+            return f.read().strip()
+    except OSError:
+        return "?"
+print("| scene | tets | ours: iterations | ours: wall s | FEniCS: load steps | FEniCS: Newton iterations | "
+      "FEniCS: wall s | FEniCS: failed attempts s | ratio FEniCS/ours | energy ours | energy FEniCS | load avg before ours / FEniCS |")
+print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|")
+for c in cells:
+    for prefix in ("cantilever-", "twisted-cantilever-"):
+        scene = prefix + size[c]
+        ours = load(os.path.join(out, scene + ".sinew.json"))
+        fe = load(os.path.join(out, scene + ".fenics.json"))
+        o_it = "%d%s" % (ours["iterations"], "" if ours.get("converged") else " (not converged)") if ours else "failed"
+        o_t = "%.2f" % ours["time_s"] if ours else "-"
+        if fe and fe.get("load_steps"):
+            f_n, f_it, f_t = str(fe["load_steps"]), str(fe["newton_iterations"]), "%.2f" % fe["wall_s"]
+            f_fail = "%.2f" % fe["failed_attempts_s"]
+            ratio = "%.1f" % (fe["wall_s"] / ours["time_s"]) if ours else "-"
+            e_fe = "%.12g" % fe["energy"]
+        else:
+            f_n, f_it, f_t, ratio, e_fe = "failed", "-", "-", "-", "-"
+            f_fail = "%.2f" % fe["failed_attempts_s"] if fe else "-"
+        e_ours = "%.12g" % ours["objective"] if ours else "-"
+        tets = fe["tets"] if fe else 6 * 5 * int(c) ** 3
+        loads = "%s / %s" % (read(os.path.join(out, scene + ".load-before-sinew")),
+                             read(os.path.join(out, scene + ".load-before-fenics")))
+        print("| %s | %d | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |"
+              % (scene, tets, o_it, o_t, f_n, f_it, f_t, f_fail, ratio, e_ours, e_fe, loads))
+print()
+print("ours: `sinew solve SCENE --solver projected-newton`, wall = result time_s (the solver run; problem "
+      "construction excluded). FEniCS: wall of the successful load-stepping run (assembly + MUMPS solves), "
+      "mesh construction and form compilation excluded (JIT cache warmed first); failed attempts with fewer "
+      "load steps timed separately. Raw outputs: %s" % out)
+EOF
