@@ -2,7 +2,7 @@
 """The issue-4 cantilever scenes solved with legacy FEniCS (dolfin 2019.2).
 
 Solves exactly the problem of sinew's built-in scenes cantilever-{6,52,206}k
-and twisted-cantilever-{6,52,206}k (problems/quasistatic/builtin_scenes.cpp)
+and twisted-cantilever-{6,52,206}k (scenes/cantilever-*.json)
 with dolfin's Newton solver, exact Jacobian, MUMPS LU and equal load steps,
 and prints one JSON line with the figures (see README.md next to this file).
 
@@ -27,14 +27,14 @@ import time
 
 import numpy as np
 
-# Scene constants (problems/quasistatic/builtin_scenes.cpp, make_cantilever).
+# Scene constants (scenes/cantilever-6k.json and its 52k, 206k siblings).
 LENGTH, SIDE = 1.0, 0.2           # box [0, 1] x [0, 0.2] x [0, 0.2] m
 A_MR, B_MR, K_MR = 1e4, 1e3, 1e5  # Pa; sigma_max = 0: no fiber term
 RHO, G = 1000.0, 9.81             # kg/m^3, m/s^2 along -z
 TWIST_ANGLE = math.pi / 4         # Eigen::AngleAxisd(M_PI / 4, UnitX)
 TWIST_AXIS_POINT = (0.0, SIDE / 2, SIDE / 2)
 TWIST_PULL = 0.1                  # m along +x
-BOUNDARY_TOLERANCE = 1e-9 * LENGTH  # builtin_scenes.cpp: |X - 0| <= 1e-9 * length
+BOUNDARY_TOLERANCE = 1e-9 * LENGTH  # sinew selects the clamped face within 1e-9 x the mesh size
 
 # Kuhn split of a cell, in sinew's order (box_tets.cpp): for permutation p the
 # tet walks from corner (0,0,0) to (1,1,1) one axis at a time; p >= 3 (odd
@@ -47,7 +47,7 @@ def log(*args):
 
 
 def scene_name(cells, twisted):
-    # builtin_scenes.cpp cantilever_name(): tets rounded to thousands.
+    # The scene files are named by tets rounded to thousands.
     tets = 6 * 5 * cells ** 3
     return ("twisted-cantilever-" if twisted else "cantilever-") + "%dk" % ((tets + 500) // 1000)
 
@@ -185,7 +185,7 @@ class Cantilever:
         self.compile_s = time.perf_counter() - t0
 
         # Dirichlet sets by node, with sinew's test |X - 0| <= 1e-9,
-        # |X - 1| <= 1e-9 (builtin_scenes.cpp), mapped to dofs.
+        # |X - 1| <= 1e-9 (as the scene files select it), mapped to dofs.
         v2d = df.vertex_to_dof_map(V).reshape(-1, 3)  # [vertex, component] -> dof
         self.v2d = v2d
         self.clamped_nodes = np.flatnonzero(np.abs(nodes[:, 0]) <= BOUNDARY_TOLERANCE)
