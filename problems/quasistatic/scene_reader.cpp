@@ -187,7 +187,8 @@ ParameterText parameter_text(const JsonCursor& p)
 struct Material {
     ElementModel model;
     double density = 0.0;
-    std::optional<Eigen::VectorXd> fiber;  ///< none: the mesh's fibers (or x̂)
+    std::optional<Eigen::VectorXd> fiber;      ///< one fiber for the whole group
+    std::optional<JsonCursor> fiber_list;      ///< a fiber per element of the group, in mesh order
     double activation = 0.0;
     double damage = 0.0;
 };
@@ -201,8 +202,18 @@ Material material(const JsonCursor& m, ElementKind kind)
     out.model = at_place(m, [&] { return parse_element_model(kind, model, parameters); });
     if (auto v = m.find("density"))
         out.density = v->number_in(0.0, HUGE_VAL);
-    if (auto v = m.find("fiber"))
-        out.fiber = v->vector();
+    if (auto v = m.find("fiber")) {
+        // [a…]: constant; {"per_element": [[a…], …]}: one per element of the
+        // group; "mesh": the generator's fiber field (also the default).
+        if (v->is_array())
+            out.fiber = v->vector();
+        else if (v->is_object()) {
+            v->expect_object({"per_element"});
+            out.fiber_list = v->at("per_element");
+            out.fiber_list->size();  // an array, or an error here
+        } else if (v->string() != "mesh")
+            v->fail("expected an array of numbers, {\"per_element\": [...]}, or \"mesh\"");
+    }
     if (auto v = m.find("activation"))
         out.activation = v->number_in(0.0, 1.0);
     if (auto v = m.find("damage"))
@@ -236,6 +247,8 @@ std::vector<Material> group_materials(const JsonCursor& list, const Mesh& mesh)
                 group->fail("group '" + name + "' has a material already");
             slot = std::move(made);
         } else {
+            if (made.fiber_list && groups > 1)
+                m.at("fiber").fail("per-element fibers need the material's \"group\" (the mesh has several)");
             if (fallback)
                 m.fail("a second material without \"group\"; only one may apply to the remaining groups");
             fallback = std::move(made);
@@ -323,13 +336,29 @@ Scene parse_scene(const std::string& text, const std::string& document, const st
     }
     scene.elastic = at_place(root.at("mesh"), [&] { return std::make_shared<ElasticPotential>(mesh, models); });
     scene.target_activations.resize(mesh.num_elements());
+    std::vector<size_t> rank_in_group(materials.size(), 0);
     for (int e = 0; e < mesh.num_elements(); ++e) {
-        const Material& m = materials[static_cast<size_t>(mesh.element_groups[static_cast<size_t>(e)])];
+        const size_t group = static_cast<size_t>(mesh.element_groups[static_cast<size_t>(e)]);
+        const Material& m = materials[group];
+        const size_t rank = rank_in_group[group]++;
         if (m.fiber)
             at_place(material_list, [&] { scene.elastic->set_fiber(e, *m.fiber); });
+        if (m.fiber_list) {
+            if (rank >= m.fiber_list->size())
+                m.fiber_list->fail("has " + std::to_string(m.fiber_list->size()) + " fibers, group '" +
+                                   mesh.group_names[group] + "' more elements");
+            const JsonCursor fiber = (*m.fiber_list)[rank];
+            const Eigen::VectorXd a = fiber.vector();
+            at_place(fiber, [&] { scene.elastic->set_fiber(e, a); });
+        }
         scene.elastic->set_damage(e, m.damage);
         scene.target_activations[e] = m.activation;
     }
+    for (size_t g = 0; g < materials.size(); ++g)
+        if (materials[g].fiber_list && materials[g].fiber_list->size() != rank_in_group[g])
+            materials[g].fiber_list->fail("has " + std::to_string(materials[g].fiber_list->size()) +
+                                          " fibers, group '" + mesh.group_names[g] + "' " +
+                                          std::to_string(rank_in_group[g]) + " elements");
     std::vector<std::shared_ptr<Potential>> terms{scene.elastic};
 
     if (auto g = root.find("gravity")) {

@@ -96,6 +96,21 @@ TEST_CASE("a rotation is scaled by its angle, a general map linearly")
     CHECK(stretch.translation_at(0.5, 3)[2] == Approx(0.5));
 }
 
+TEST_CASE("fibers per element, in mesh order")
+{
+    std::string fibers;
+    for (int e = 0; e < 12; ++e)
+        fibers += std::string(e ? ", " : "") + "[1, " + std::to_string(e) + ", 0]";
+    const Scene scene = parse_scene(replaced(beam_scene(), "\"density\": 1000",
+                                             "\"fiber\": {\"per_element\": [" + fibers + "]}"),
+                                    "test.json");
+    for (int e = 0; e < 12; ++e)
+        CHECK(scene.elastic->fiber(e).isApprox(Eigen::Vector3d(1, e, 0).normalized()));
+    const std::string message = error_of(replaced(beam_scene(), "\"density\": 1000",
+                                                  "\"fiber\": {\"per_element\": [" + fibers + ", [0, 0, 1]]}"));
+    CHECK_THAT(message, Catch::Contains("materials[0].fiber.per_element: has 13 fibers, group 'default' 12 elements"));
+}
+
 TEST_CASE("materials by group, loads, obstacles and the equality-constraint form")
 {
     const std::string text = R"({
@@ -171,6 +186,9 @@ TEST_CASE("bad scene input gives one InputError naming the document and the JSON
         Case{replaced(good, "\"density\": 1000", "\"density\": -1"), "materials[0].density: must lie in"},
         Case{replaced(good, "\"density\": 1000", "\"group\": \"bone\""), "materials[0].group: the mesh has no group 'bone'"},
         Case{replaced(good, "\"density\": 1000", "\"fiber\": [0, 0, 0]"), "materials: elastic potential: element 0: fiber is zero"},
+        Case{replaced(good, "\"density\": 1000", "\"fiber\": {\"per_element\": [[1, 0, 0]]}"),
+             "materials[0].fiber.per_element: has 1 fibers, group 'default' more elements"},
+        Case{replaced(good, "\"density\": 1000", "\"fiber\": \"along x\""), "materials[0].fiber: expected an array"},
         Case{replaced(good, "\"density\": 1000", "\"activation\": 2"), "materials[0].activation: must lie in [0, 1]"},
         Case{replaced(good, "\"point\": [0, 0, 0]", "\"point\": [5, 0, 0]"), "boundary[0].select: the selection picks no node"},
         Case{replaced(good, "\"normal\": [1, 0, 0]", "\"normal\": [0, 0, 0]"), "boundary[0].select: normal must not be zero"},
