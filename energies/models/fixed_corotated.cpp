@@ -44,24 +44,14 @@ double FixedCorotated::evaluate(const Deformation& F, const Point&, Stress* P, S
     const Eigen::Vector3d& s = svd.sigma;
     const double J = s.prod();                        // J = σ₀σ₁σ₂ (σ₂ < 0 when inverted)
     const double volume_factor = lambda_ * (J - 1.0);  // λ (J − 1)
-    const Eigen::Matrix3d dJdF = determinant_gradient(F);  // ∂J/∂F = cof F
     if (P)
-        *P = 2.0 * mu_ * (F - svd.U * svd.V.transpose()) + volume_factor * dJdF;  // P = 2μ(F − R) + λ(J − 1) ∂J/∂F
+        *P = 2.0 * mu_ * (F - svd.U * svd.V.transpose()) + volume_factor * determinant_gradient(F);  // P = 2μ(F − R) + λ(J − 1) ∂J/∂F
     if (dPdF) {
-        // ∂P/∂F = 2μ(𝕀 − ∂R/∂F) + λ vec(∂J/∂F) vec(∂J/∂F)ᵀ + λ(J − 1) ∂²J/∂F², with
-        // ∂R/∂F = Σ_k 2/(σ_i + σ_j) t_k t_kᵀ over the twist modes t_k of the pairs (i, j)
-        // (Kim & Eberle, Dynamic Deformables, 2020; R does not turn along the scaling and flip modes).
-        const Eigen::Map<const Eigen::Matrix<double, 9, 1>> g(dJdF.data());
         Stiffness& H = *dPdF;
-        H.noalias() = lambda_ * g * g.transpose();
-        H.diagonal().array() += 2.0 * mu_;
-        add_determinant_hessian(volume_factor, F, H);
         // σ_i + σ_j for the pair k (the pair without k).
         const Eigen::Vector3d pair_sum(std::max(s[1] + s[2], kMinSingularValueSum),
                                        std::max(s[0] + s[2], kMinSingularValueSum),
                                        std::max(s[0] + s[1], kMinSingularValueSum));
-        ModeCorrection rotation_part;
-        rotation_part.twist = -4.0 * mu_ * pair_sum.cwiseInverse();  // −2μ ∂R/∂F
         if (projection == Projection::clamp) {
             // Eigenvalues from ψ(σ) (Smith, de Goes, Kim 2019, "Analytic eigensystems for isotropic
             // distortion energies"; seed 000 §4.5 block structure): with
@@ -69,6 +59,7 @@ double FixedCorotated::evaluate(const Deformation& F, const Point&, Stress* P, S
             //   twist_k = (ψ_i + ψ_j)/(σ_i + σ_j) = 2μ(1 − 2/(σ_i + σ_j)) + λ(J − 1)σ_k,
             //   flip_k = (ψ_i − ψ_j)/(σ_i − σ_j) = 2μ − λ(J − 1)σ_k (no division: exact at σ_i = σ_j),
             //   scaling ∂²ψ/∂σ_i∂σ_j = 2μδ_ij + λ J_i J_j + λ(J − 1)(1 − δ_ij)σ_k.
+            // ∂P/∂F is this eigensystem, clamped, rotated to vec(F).
             const Eigen::Vector3d dJ(s[1] * s[2], s[0] * s[2], s[0] * s[1]);
             IsotropicStiffnessSpectrum spectrum;
             spectrum.twist = (2.0 * mu_) * (Eigen::Vector3d::Ones() - 2.0 * pair_sum.cwiseInverse()) + volume_factor * s;
@@ -81,10 +72,19 @@ double FixedCorotated::evaluate(const Deformation& F, const Point&, Stress* P, S
             spectrum.scaling(1, 0) = spectrum.scaling(0, 1);
             spectrum.scaling(2, 0) = spectrum.scaling(0, 2);
             spectrum.scaling(2, 1) = spectrum.scaling(1, 2);
-            ModeCorrection clamp = clamp_correction(spectrum);
-            clamp.twist += rotation_part.twist;
-            add_mode_correction(svd, clamp, H);
+            bool clamped = false;
+            rotate_svd_frame_stiffness(svd.U, svd.V, frame_of(clamp_spectrum(spectrum, clamped)), Accumulate::assign, H);
         } else {
+            // ∂P/∂F = 2μ(𝕀 − ∂R/∂F) + λ vec(∂J/∂F) vec(∂J/∂F)ᵀ + λ(J − 1) ∂²J/∂F², with
+            // ∂R/∂F = Σ_k 2/(σ_i + σ_j) t_k t_kᵀ over the twist modes t_k of the pairs (i, j)
+            // (Kim & Eberle, Dynamic Deformables, 2020; R does not turn along the scaling and flip modes).
+            const Eigen::Matrix3d dJdF = determinant_gradient(F);
+            const Eigen::Map<const Eigen::Matrix<double, 9, 1>> g(dJdF.data());
+            H.noalias() = lambda_ * g * g.transpose();
+            H.diagonal().array() += 2.0 * mu_;
+            add_determinant_hessian(volume_factor, F, H);
+            ModeCorrection rotation_part;
+            rotation_part.twist = -4.0 * mu_ * pair_sum.cwiseInverse();  // −2μ ∂R/∂F
             add_mode_correction(svd, rotation_part, H);
         }
     }

@@ -33,7 +33,8 @@ public:
     double energy(const Deformation& F, const Point& point) const override;
     /// ∂P/∂F analytic, ∂R/∂F as three twist-mode terms; Projection::clamp clamps
     /// the negative eigenvalues of the singular-space eigensystem (one 3×3 block,
-    /// three twist and three flip modes). One SVD either way.
+    /// three twist and three flip modes) and assembles ∂P/∂F from it. One SVD
+    /// either way.
     double evaluate(const Deformation& F, const Point& point, Stress* P, Stiffness* dPdF,
                     Projection projection) const override;
 

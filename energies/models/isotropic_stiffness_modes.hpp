@@ -7,10 +7,12 @@
 // modes vec(u_i v_iᵀ) coupled by the 3×3 matrix ∂²ψ/∂σ_i∂σ_j, and for each
 // pair (i, j) a twist mode vec(u_i v_jᵀ − u_j v_iᵀ)/√2 and a flip mode
 // vec(u_i v_jᵀ + u_j v_iᵀ)/√2 that are eigenvectors on their own. Shared by
-// the stable Neo-Hookean and fixed corotated models for their closed-form
-// PSD projection.
+// the stable Neo-Hookean, fixed corotated and QR anisotropic models for their
+// closed-form PSD projection.
 #include "sinew/energies/models/fast_rotation_variant_svd.hpp"
+#include "sinew/energies/models/psd_projection.hpp"
 #include "sinew/energies/models/rotation_variant_svd.hpp"
+#include "sinew/energies/models/svd_frame_stiffness.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/LU>  // determinant()
@@ -28,16 +30,6 @@ struct IsotropicStiffnessSpectrum {
     Eigen::Vector3d flip;     ///< eigenvalue (ψ_i − ψ_j)/(σ_i − σ_j) on the flip mode of pair k
 };
 
-using StiffnessMode = Eigen::Matrix<double, 9, 1>;
-
-/// vec(a bᵀ) in Eigen's column-major order (index r + 3c).
-inline StiffnessMode outer_vec(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
-{
-    StiffnessMode out;
-    out << b[0] * a, b[1] * a, b[2] * a;
-    return out;
-}
-
 /// The pair (i, j), i < j, of pair index k (the index it leaves out).
 inline void pair_of(int k, int& i, int& j)
 {
@@ -53,76 +45,76 @@ inline bool positive_definite_3x3(const Eigen::Matrix3d& A)
     return A(0, 0) > 0.0 && minor2 > 0.0 && A.determinant() > 0.0;
 }
 
-/// Rank-one terms to add to ∂P/∂F in the eigenbasis of an isotropic model:
-/// H += Σ_k twist_k t_k t_kᵀ + flip_k f_k f_kᵀ + Σ_m scaling_weight_m s_m s_mᵀ,
-/// with t_k, f_k the twist and flip modes of pair k and s_m = Σ_i e_mi vec(u_i v_iᵀ)
-/// for the unit 3-vectors e_m = scaling_direction[m] of the scaling block.
+/// The same spectrum as frame blocks (svd_frame_stiffness.hpp): the scaling
+/// block as is, α = (twist + flip)/2 and β = (flip − twist)/2 per pair, so
+/// that α − β is the twist and α + β the flip eigenvalue.
+inline SvdFrameStiffness frame_of(const IsotropicStiffnessSpectrum& spectrum)
+{
+    SvdFrameStiffness frame;
+    frame.diagonal_block = spectrum.scaling;
+    frame.alpha = 0.5 * (spectrum.twist + spectrum.flip);
+    frame.beta = 0.5 * (spectrum.flip - spectrum.twist);
+    return frame;
+}
+
+/// The spectrum with every negative eigenvalue clamped to zero (seed 000
+/// §5.6: clamp the eigenvalues of each block): twist and flip eigenvalues
+/// raised to zero, the scaling block less its negative part
+/// (negative_part_3x3), computed only when Sylvester's criterion does not
+/// already prove the block positive definite. `clamped` tells whether
+/// anything changed.
+inline IsotropicStiffnessSpectrum clamp_spectrum(const IsotropicStiffnessSpectrum& spectrum, bool& clamped)
+{
+    IsotropicStiffnessSpectrum out = spectrum;
+    out.twist = spectrum.twist.cwiseMax(0.0);
+    out.flip = spectrum.flip.cwiseMax(0.0);
+    clamped = (spectrum.twist.array() < 0.0).any() || (spectrum.flip.array() < 0.0).any();
+    if (!positive_definite_3x3(spectrum.scaling)) {
+        const Eigen::Matrix3d negative = negative_part_3x3(spectrum.scaling).part;
+        if (!negative.isZero(0.0)) {
+            out.scaling -= negative;
+            clamped = true;
+        }
+    }
+    return out;
+}
+
+/// Terms to add to ∂P/∂F in the eigenbasis of an isotropic model:
+/// H += Σ_k twist_k t_k t_kᵀ + flip_k f_k f_kᵀ + Σ_ij scaling_ij s_i s_jᵀ,
+/// with t_k, f_k the twist and flip modes of pair k and s_i = vec(u_i v_iᵀ)
+/// the scaling modes.
 struct ModeCorrection {
     Eigen::Vector3d twist = Eigen::Vector3d::Zero();
     Eigen::Vector3d flip = Eigen::Vector3d::Zero();
-    int scaling_count = 0;
-    Eigen::Vector3d scaling_weight = Eigen::Vector3d::Zero();
-    Eigen::Matrix3d scaling_direction = Eigen::Matrix3d::Zero();  ///< column m is e_m
+    bool has_scaling = false;  ///< scaling ≠ 0
+    Eigen::Matrix3d scaling = Eigen::Matrix3d::Zero();  ///< symmetric, on the scaling modes
 };
 
 /// The correction that clamps every negative eigenvalue of the spectrum to
-/// zero (seed 000 §5.6: clamp the eigenvalues of each block): −λ on each
-/// twist or flip mode with λ < 0, and on each negative eigenvector of the
-/// scaling block, which is decomposed (symmetric_eigen_3x3) only when
-/// Sylvester's criterion does not already prove it positive definite.
+/// zero (clamp_spectrum): −λ on each twist or flip mode with λ < 0, minus
+/// the negative part of the scaling block.
 inline ModeCorrection clamp_correction(const IsotropicStiffnessSpectrum& spectrum)
 {
+    bool clamped = false;
+    const IsotropicStiffnessSpectrum projected = clamp_spectrum(spectrum, clamped);
     ModeCorrection correction;
-    correction.twist = -spectrum.twist.cwiseMin(0.0);
-    correction.flip = -spectrum.flip.cwiseMin(0.0);
-    if (positive_definite_3x3(spectrum.scaling))
-        return correction;
-    const SymmetricEigen3 eigen = symmetric_eigen_3x3(spectrum.scaling);
-    for (int m = 0; m < 3; ++m)
-        if (eigen.values[m] < 0.0) {
-            correction.scaling_weight[correction.scaling_count] = -eigen.values[m];
-            correction.scaling_direction.col(correction.scaling_count) = eigen.vectors.col(m);
-            ++correction.scaling_count;
-        }
+    correction.twist = projected.twist - spectrum.twist;
+    correction.flip = projected.flip - spectrum.flip;
+    correction.scaling = projected.scaling - spectrum.scaling;
+    correction.has_scaling = !correction.scaling.isZero(0.0);
     return correction;
 }
 
-/// H += the rank-one terms of the correction (zero weights skipped), in one
-/// pass over H.
+/// H += the terms of the correction, rotated from the SVD frame
+/// (rotate_svd_frame_stiffness).
 inline void add_mode_correction(const RotationVariantSvd<3>& svd, const ModeCorrection& correction,
                                 Eigen::Matrix<double, 9, 9>& H)
 {
-    // H += Σ_m w_m q_m q_mᵀ over at most 9 terms.
-    Eigen::Matrix<double, 9, 9> modes, weighted;
-    int count = 0;
-    const auto push = [&](double weight, const StiffnessMode& q) {
-        modes.col(count) = q;
-        weighted.col(count) = weight * q;
-        ++count;
-    };
-    for (int k = 0; k < 3; ++k) {
-        if (correction.twist[k] == 0.0 && correction.flip[k] == 0.0)
-            continue;
-        int i = 0, j = 0;
-        pair_of(k, i, j);
-        const StiffnessMode a = outer_vec(svd.U.col(i), svd.V.col(j)), b = outer_vec(svd.U.col(j), svd.V.col(i));
-        if (correction.twist[k] != 0.0)
-            push(correction.twist[k], std::sqrt(0.5) * (a - b));  // t_k = vec(u_i v_jᵀ − u_j v_iᵀ)/√2
-        if (correction.flip[k] != 0.0)
-            push(correction.flip[k], std::sqrt(0.5) * (a + b));  // f_k = vec(u_i v_jᵀ + u_j v_iᵀ)/√2
-    }
-    if (correction.scaling_count > 0) {
-        StiffnessMode scaling_modes[3];
-        for (int i = 0; i < 3; ++i)
-            scaling_modes[i] = outer_vec(svd.U.col(i), svd.V.col(i));
-        for (int m = 0; m < correction.scaling_count; ++m) {
-            const Eigen::Vector3d& e = correction.scaling_direction.col(m);
-            push(correction.scaling_weight[m], e[0] * scaling_modes[0] + e[1] * scaling_modes[1] + e[2] * scaling_modes[2]);
-        }
-    }
-    for (int c = 0; c < 9; ++c)
-        for (int m = 0; m < count; ++m)
-            H.col(c) += modes(c, m) * weighted.col(m);
+    IsotropicStiffnessSpectrum terms;
+    terms.twist = correction.twist;
+    terms.flip = correction.flip;
+    terms.scaling = correction.scaling;
+    rotate_svd_frame_stiffness(svd.U, svd.V, frame_of(terms), Accumulate::add, H);
 }
 
 } // namespace sinew

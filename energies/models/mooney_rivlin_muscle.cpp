@@ -2,8 +2,8 @@
 
 #include "sinew/core/input_error.hpp"
 #include "sinew/energies/models/fast_rotation_variant_svd.hpp"
-
-#include <Eigen/Eigenvalues>
+#include "sinew/energies/models/psd_projection.hpp"
+#include "sinew/energies/models/svd_frame_stiffness.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,8 +17,9 @@ using Vec9 = Eigen::Matrix<double, 9, 1>;
 using Mat3 = Eigen::Matrix3d;
 using Mat9 = Eigen::Matrix<double, 9, 9>;
 
-// The pairs (i, j) of the 2×2 blocks B_ij (seed 000 §4.5).
-constexpr int kPairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+// The pairs (i, j) of the 2×2 blocks B_ij (seed 000 §4.5), pair k the one without k
+// (the order of SvdFrameStiffness).
+constexpr int kPairs[3][2] = {{1, 2}, {0, 2}, {0, 1}};
 // σ_i + σ_j divides the thresholded ln J block; it vanishes only where an
 // inverted σ₃ = −σ₂, where P itself has a kink (docs: inversion). Floored
 // there to stay finite.
@@ -82,87 +83,21 @@ PairBlock log_volume_pair(const LogVolume& v, const Vec3& sigma, double c, int i
     return {0.5 * (difference + sum), 0.5 * (difference - sum)};
 }
 
-/// The isotropic ∂P/∂F in the SVD frame (seed 000 §4.5.1.4): the 3×3 block A
-/// on (δF̂₁₁, δF̂₂₂, δF̂₃₃) and B_ij = [[α_ij, β_ij], [β_ij, α_ij]] on
-/// (δF̂_ij, δF̂_ji), whose eigenvalues α ± β belong to the modes (1, ±1)/√2.
-struct SvdFrameStiffness {
-    Mat3 diagonal_block;
-    Vec3 alpha;  ///< α_ij in the order of kPairs
-    Vec3 beta;   ///< β_ij in the order of kPairs
-};
-
-/// K = (V ⊗ U) K̂ (V ⊗ U)ᵀ: the SVD-frame blocks rotated to vec(F), through
-/// the 3×3 blocks K̂_(b,d)[a, c] = K̂(a + 3b, c + 3d). K̂_(b,b) is diagonal
-/// (A_bb at b, α_ib at i ≠ b), K̂_(b,d) holds A_bd at [b, d] and β_bd at [d, b].
-/// Step 1: X_(b,d) = U K̂_(b,d) Uᵀ; step 2: K_(r,s) = Σ_{b,d} V_rb V_sd X_(b,d).
-void assemble_isotropic(const Mat3& U, const Mat3& V, const SvdFrameStiffness& frame, Mat9& K)
-{
-    const Mat3& A = frame.diagonal_block;
-    Mat3 uu[3];
-    for (int i = 0; i < 3; ++i)
-        uu[i].noalias() = U.col(i) * U.col(i).transpose();
-    Mat3 X[3][3];
-    for (int b = 0; b < 3; ++b)
-        X[b][b] = A(b, b) * uu[b];
-    for (int m = 0; m < 3; ++m) {
-        const int b = kPairs[m][0], d = kPairs[m][1];
-        X[b][b] += frame.alpha[m] * uu[d];  // α_db at [d, d] of K̂_(b,b)
-        X[d][d] += frame.alpha[m] * uu[b];
-        const Mat3 ud = U.col(b) * U.col(d).transpose();
-        X[b][d] = A(b, d) * ud + frame.beta[m] * ud.transpose();
-        X[d][b] = X[b][d].transpose();
-    }
-    Mat3 Y[3][3];  // Y_(r,d) = Σ_b V_rb X_(b,d)
-    for (int r = 0; r < 3; ++r)
-        for (int d = 0; d < 3; ++d)
-            Y[r][d] = V(r, 0) * X[0][d] + V(r, 1) * X[1][d] + V(r, 2) * X[2][d];
-    for (int r = 0; r < 3; ++r)
-        for (int s = r; s < 3; ++s) {
-            const Mat3 block = V(s, 0) * Y[r][0] + V(s, 1) * Y[r][1] + V(s, 2) * Y[r][2];
-            K.block<3, 3>(3 * r, 3 * s) = block;
-            if (s != r)
-                K.block<3, 3>(3 * s, 3 * r) = block.transpose();
-        }
-}
-
-/// The unit eigenvector of the symmetric A for its simple eigenvalue ν: the
-/// largest cross product of two rows of A − νI.
-Vec3 eigenvector(const Mat3& A, double nu)
-{
-    const Mat3 M = A - nu * Mat3::Identity();
-    const Vec3 candidates[3] = {M.row(0).cross(M.row(1)), M.row(0).cross(M.row(2)), M.row(1).cross(M.row(2))};
-    int best = 0;
-    for (int k = 1; k < 3; ++k)
-        if (candidates[k].squaredNorm() > candidates[best].squaredNorm())
-            best = k;
-    return candidates[best].normalized();
-}
-
-/// Clamps the negative eigenvalues of the symmetric 3×3 A to zero (§5.6);
-/// false, A untouched, when it has none (Sylvester's criterion first). Only
-/// the eigenvector of the eigenvalue whose sign differs from the other two is
-/// needed, and it is well conditioned: its error ~ε|A|/gap is weighted by
-/// |ν| ≤ gap. `negative` receives a unit q with qᵀAq < 0 (≤ 0 at ties).
+/// Clamps the negative eigenvalues of the symmetric 3×3 A to zero (§5.6),
+/// A ← A − A₋ (negative_part_3x3); false, A untouched, when it has none
+/// (Sylvester's criterion first). `negative` receives a unit eigenvector q of
+/// a negative eigenvalue (qᵀAq < 0): only the eigenpairs whose sign differs
+/// from the others enter A₋, and they are well conditioned, their error
+/// ~ε|A|/gap weighted by |ν| ≤ gap.
 bool clamp_block(Mat3& A, Vec3& negative)
 {
     if (A(0, 0) > 0.0 && A(0, 0) * A(1, 1) - A(0, 1) * A(0, 1) > 0.0 && A.determinant() > 0.0)
         return false;
-    Eigen::SelfAdjointEigenSolver<Mat3> eigen;
-    eigen.computeDirect(A, Eigen::EigenvaluesOnly);
-    const Vec3 nu = eigen.eigenvalues();  // ascending
-    if (nu[0] >= 0.0)
+    const NegativePart3 part = negative_part_3x3(A);
+    if (part.part.isZero(0.0))
         return false;
-    if (nu[2] <= 0.0) {
-        negative = Vec3::UnitX();
-        A.setZero();
-    } else if (nu[1] <= 0.0) {
-        const Vec3 q = eigenvector(A, nu[2]);
-        negative = q.cross(Vec3::Unit(std::abs(q[0]) < std::abs(q[1]) ? 0 : 1)).normalized();  // ⊥ q: in the ν ≤ 0 space
-        A.noalias() = nu[2] * q * q.transpose();
-    } else {
-        negative = eigenvector(A, nu[0]);
-        A.noalias() -= nu[0] * negative * negative.transpose();
-    }
+    A -= part.part;
+    negative = part.direction;
     return true;
 }
 
@@ -556,7 +491,7 @@ double MooneyRivlinMuscle::evaluate(const Deformation& F, const Point& point, St
     }
     Stiffness& K = *dPdF;
     const auto assemble_exact = [&] {
-        assemble_isotropic(svd.U, svd.V, frame, K);
+        rotate_svd_frame_stiffness(svd.U, svd.V, frame, Accumulate::assign, K);
         if (fiber_force)
             add_fiber_stiffness(fiber, t.f, t.df, K);
     };
@@ -596,7 +531,7 @@ double MooneyRivlinMuscle::evaluate(const Deformation& F, const Point& point, St
                 return t.psi;
         }
     }
-    assemble_isotropic(svd.U, svd.V, projected, K);
+    rotate_svd_frame_stiffness(svd.U, svd.V, projected, Accumulate::assign, K);
     if (fiber_force)
         add_projected_fiber_stiffness(fiber, t.f, t.df, K);
     return t.psi;

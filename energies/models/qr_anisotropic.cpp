@@ -228,23 +228,31 @@ double fiber_quadratic_form(const Fiber<3>& fiber, const Vec<3>& w)
 
 /// True when a cheap direction m proves H indefinite, mᵀ H m < −shift (then
 /// H + shift·I has no Cholesky factorization either). Directions tried:
-///  · per compressed fiber, vec(e aᵀ) with e a unit vector across q and across
-///    cof F·a: the isotropic part gives it α only (cof F : e aᵀ = 0, and ∂²J
-///    vanishes on rank-one directions), the fiber its bending k(1 − 1/r);
+///  · per compressed fiber, m = vec(e aᵀ) with e a unit vector across q and
+///    across cof F·a. On this rank-one direction ∂²J vanishes (det is affine
+///    along F + t e aᵀ), so mᵀ H m = α + β (e·cof F a)² + Σ fibers (Y a_f)ᵀ K_f (Y a_f)
+///    with Y a_f = (a·a_f) e, no product with H: the isotropic part gives
+///    α (e·cof F a = 0 but for the fallback e), the fiber its bending k(1 − 1/r);
 ///  · each negative twist or flip mode Y = (uᵢvⱼᵀ ∓ uⱼvᵢᵀ)/√2 of the isotropic
 ///    part, an eigenvector of it: mᵀ H m = its eigenvalue + Σ fibers (Y a)ᵀ K (Y a).
-bool proven_indefinite(const Hessian<3>& H, double shift, const QrState<3>& st, const RotationVariantSvd<3>& svd,
+bool proven_indefinite(double shift, const QrState<3>& st, const RotationVariantSvd<3>& svd,
                        const IsotropicStiffnessSpectrum& spectrum)
 {
     const std::array<const Fiber<3>*, 2> fibers{&st.fiber, &st.second};
     for (const Fiber<3>* fiber : fibers) {
         if (!fiber->has_negative_part())
             continue;
-        Vec<3> e = fiber->q.cross(st.cof * fiber->a);
+        const Vec<3> image = st.cof * fiber->a;  // cof F a
+        Vec<3> e = fiber->q.cross(image);
         if (!(e.squaredNorm() > 1e-24))
             e = detail::unit_orthogonal(fiber->q);
-        const Vec<9> m = outer_vec(e.normalized(), fiber->a);
-        if (m.dot(H * m) < -shift)
+        e.normalize();
+        const double along_cofactor = e.dot(image);
+        double rayleigh = st.alpha + st.beta * along_cofactor * along_cofactor;
+        for (const Fiber<3>* other : fibers)
+            if (other->k != 0.0)
+                rayleigh += fiber_quadratic_form(*other, fiber->a.dot(other->a) * e);
+        if (rayleigh < -shift)
             return true;
     }
     for (int k = 0; k < 3; ++k) {
@@ -279,11 +287,11 @@ void clamp_3d(const QrState<3>& st, const Mat<3>& F, Hessian<3>& H)
     const RotationVariantSvd<3> svd = fast_rotation_variant_svd(F);
     const IsotropicStiffnessSpectrum spectrum = isotropic_spectrum(st, svd.sigma);
     const ModeCorrection correction = clamp_correction(spectrum);
-    const bool isotropic_negative = correction.twist.any() || correction.flip.any() || correction.scaling_count > 0;
+    const bool isotropic_negative = correction.twist.any() || correction.flip.any() || correction.has_scaling;
     if (!isotropic_negative && !st.fiber.has_negative_part() && !st.second.has_negative_part())
         return;
     const double shift = 1e-12 * H.cwiseAbs().maxCoeff();
-    if (!proven_indefinite(H, shift, st, svd, spectrum) && is_positive_semidefinite(H))
+    if (!proven_indefinite(shift, st, svd, spectrum) && is_positive_semidefinite(H))
         return;
     add_mode_correction(svd, correction, H);
     // A fiber's negative part: k(1 − 1/r)(a aᵀ) ⊗ (I − q qᵀ), the bending of a compressed fiber.

@@ -42,12 +42,7 @@ double StableNeoHookean::evaluate(const Deformation& F, const Point&, Stress* P,
     if (P)
         *P = mu_ * F + c * dJdF;  // P = μF + (λ'(J − 1) − μ) ∂J/∂F
     if (dPdF) {
-        // ∂P/∂F = μ𝕀 + λ' vec(∂J/∂F) vec(∂J/∂F)ᵀ + c ∂²J/∂F²
-        const Eigen::Map<const Eigen::Matrix<double, 9, 1>> g(dJdF.data());
         Stiffness& H = *dPdF;
-        H.noalias() = lambda_stable_ * g * g.transpose();
-        H.diagonal().array() += mu_;
-        add_determinant_hessian(c, F, H);
         if (projection == Projection::clamp) {
             // The paper's analytic eigensystem (Smith et al. 2018; seed 000 §4.5
             // block structure): with J_i = ∂J/∂σ_i = Π_{m≠i} σ_m and ∂²J/∂σ_i∂σ_j = σ_k (i ≠ j, k the
@@ -66,8 +61,19 @@ double StableNeoHookean::evaluate(const Deformation& F, const Point&, Stress* P,
             spectrum.scaling(1, 0) = spectrum.scaling(0, 1);
             spectrum.scaling(2, 0) = spectrum.scaling(0, 2);
             spectrum.scaling(2, 1) = spectrum.scaling(1, 2);
-            add_mode_correction(svd, clamp_correction(spectrum), H);
+            bool clamped = false;
+            const IsotropicStiffnessSpectrum projected = clamp_spectrum(spectrum, clamped);
+            if (clamped) {
+                // ∂P/∂F = (V ⊗ U) (clamped frame blocks) (V ⊗ U)ᵀ, no exact ∂P/∂F needed.
+                rotate_svd_frame_stiffness(svd.U, svd.V, frame_of(projected), Accumulate::assign, H);
+                return energy_of(F.squaredNorm(), J);
+            }
         }
+        // ∂P/∂F = μ𝕀 + λ' vec(∂J/∂F) vec(∂J/∂F)ᵀ + c ∂²J/∂F²
+        const Eigen::Map<const Eigen::Matrix<double, 9, 1>> g(dJdF.data());
+        H.noalias() = lambda_stable_ * g * g.transpose();
+        H.diagonal().array() += mu_;
+        add_determinant_hessian(c, F, H);
     }
     return energy_of(F.squaredNorm(), J);
 }

@@ -29,7 +29,8 @@ public:
     std::string name() const override { return kName; }
     double energy(const Deformation& F, const Point& point) const override;
     /// ∂P/∂F analytic in F; Projection::clamp clamps the 9 eigenvalues of the
-    /// paper's analytic eigensystem (needs one SVD, skipped by Projection::none).
+    /// paper's analytic eigensystem and, when one was negative, assembles ∂P/∂F
+    /// from the clamped eigensystem (needs one SVD, skipped by Projection::none).
     double evaluate(const Deformation& F, const Point& point, Stress* P, Stiffness* dPdF,
                     Projection projection) const override;
 

@@ -1,5 +1,7 @@
 #include "sinew/energies/models/fast_rotation_variant_svd.hpp"
+#include "sinew/energies/models/psd_projection.hpp"
 #include "sinew/energies/models/rotation_variant_svd.hpp"
+#include "sinew/energies/models/svd_frame_stiffness.hpp"
 
 #include "energies/deformation_regimes.hpp"
 
@@ -227,4 +229,86 @@ TEST_CASE("symmetric 3x3 eigen-decomposition: against Eigen's SelfAdjointEigenSo
     const SymmetricEigen3 zero = symmetric_eigen_3x3(Eigen::Matrix3d::Zero());
     CHECK(zero.values.isZero(0.0));
     CHECK(zero.vectors.isIdentity(0.0));
+}
+
+TEST_CASE("fast SVD: rotations and their negatives (FᵀF = I to rounding)", "[energies][fast-svd]")
+{
+    // FᵀF of a rotation is I up to a few ulps: the shifted matrix of the
+    // closed-form eigenpair is then rounding noise, possibly of rank below 2.
+    std::mt19937 rng(308);
+    for (int sample = 0; sample < 10 * kSamples; ++sample) {
+        const Eigen::Matrix3d Q = random_rotation<3>(rng);
+        const Eigen::Matrix3d F = sample % 2 == 0 ? Q : Eigen::Matrix3d(-Q);
+        CAPTURE(sample, F);
+        check_svd(F);
+    }
+}
+
+TEST_CASE("negative part of a symmetric 3x3 matrix: against Eigen's SelfAdjointEigenSolver", "[energies][fast-svd]")
+{
+    std::mt19937 rng(309);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    std::uniform_real_distribution<double> symmetric(-1.0, 1.0);
+    for (int sample = 0; sample < 10 * kSamples; ++sample) {
+        // Eigenvalues of either sign, repeated and clustered ones in half the samples.
+        Eigen::Vector3d values(symmetric(rng), symmetric(rng), symmetric(rng));
+        if (sample % 4 == 1)
+            values[1] = values[0];
+        if (sample % 4 == 2)
+            values[1] = -values[0] * std::pow(10.0, -16.0 * u01(rng));
+        if (sample % 4 == 3)
+            values[2] = values[1] * (1.0 + std::pow(10.0, -16.0 * u01(rng)));
+        const double scale = std::pow(10.0, 12.0 * (u01(rng) - 0.5));
+        const Eigen::Matrix3d Q = random_rotation<3>(rng);
+        const Eigen::Matrix3d A = scale * Q * values.asDiagonal() * Q.transpose();
+        CAPTURE(sample, values, scale, A);
+        const NegativePart3 negative = negative_part_3x3(A);
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> reference(A);
+        const Eigen::Matrix3d expected = reference.eigenvectors() * reference.eigenvalues().cwiseMin(0.0).asDiagonal() *
+                                         reference.eigenvectors().transpose();
+        const double size = A.cwiseAbs().maxCoeff();
+        CHECK((negative.part - expected).cwiseAbs().maxCoeff() <= kTolerance * size);
+        if (reference.eigenvalues()[0] < -kTolerance * size) {
+            CHECK(std::abs(negative.direction.norm() - 1.0) <= kTolerance);
+            CHECK(negative.direction.dot(A * negative.direction) < 0.0);
+        }
+    }
+}
+
+TEST_CASE("SVD-frame stiffness rotated to vec(F): against the product with V ⊗ U", "[energies][fast-svd]")
+{
+    std::mt19937 rng(310);
+    std::uniform_real_distribution<double> symmetric(-1.0, 1.0);
+    for (int sample = 0; sample < kSamples; ++sample) {
+        const Eigen::Matrix3d U = random_rotation<3>(rng), V = random_rotation<3>(rng);
+        SvdFrameStiffness frame;
+        for (int i = 0; i < 3; ++i) {
+            for (int j = i; j < 3; ++j)
+                frame.diagonal_block(i, j) = frame.diagonal_block(j, i) = symmetric(rng);
+            frame.alpha[i] = symmetric(rng);
+            frame.beta[i] = symmetric(rng);
+        }
+        // K̂ on vec(δF̂) (index a + 3b for δF̂_ab) and W = V ⊗ U, W(i + 3j, a + 3b) = U_ia V_jb.
+        Eigen::Matrix<double, 9, 9> K_hat = Eigen::Matrix<double, 9, 9>::Zero(), W;
+        for (int a = 0; a < 3; ++a)
+            for (int c = 0; c < 3; ++c)
+                K_hat(a + 3 * a, c + 3 * c) = frame.diagonal_block(a, c);
+        for (int k = 0; k < 3; ++k) {
+            const int i = k == 0 ? 1 : 0, j = k == 2 ? 1 : 2;
+            K_hat(i + 3 * j, i + 3 * j) = K_hat(j + 3 * i, j + 3 * i) = frame.alpha[k];
+            K_hat(i + 3 * j, j + 3 * i) = K_hat(j + 3 * i, i + 3 * j) = frame.beta[k];
+        }
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                for (int a = 0; a < 3; ++a)
+                    for (int b = 0; b < 3; ++b)
+                        W(i + 3 * j, a + 3 * b) = U(i, a) * V(j, b);
+        const Eigen::Matrix<double, 9, 9> expected = W * K_hat * W.transpose();
+        Eigen::Matrix<double, 9, 9> assigned, added = Eigen::Matrix<double, 9, 9>::Identity();
+        rotate_svd_frame_stiffness(U, V, frame, Accumulate::assign, assigned);
+        rotate_svd_frame_stiffness(U, V, frame, Accumulate::add, added);
+        CAPTURE(sample);
+        CHECK((assigned - expected).cwiseAbs().maxCoeff() <= kTolerance);
+        CHECK((added - Eigen::Matrix<double, 9, 9>::Identity() - expected).cwiseAbs().maxCoeff() <= kTolerance);
+    }
 }
