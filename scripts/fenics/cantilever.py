@@ -322,6 +322,8 @@ def main():
     parser.add_argument("--twisted", action="store_true", help="the twisted-cantilever scene")
     parser.add_argument("--max-steps", type=int, default=64,
                         help="largest number of load steps tried (N = 1, 2, 4, ... up to this)")
+    parser.add_argument("--min-steps", type=int, default=1,
+                        help="smallest number of load steps tried (to skip attempts already seen to fail)")
     parser.add_argument("--save-displacement", metavar="PATH",
                         help="write the nodal displacement (N x 3, sinew's node order) as .npy")
     parser.add_argument("--rtol", type=float, default=1e-8, help="Newton relative residual tolerance (l2)")
@@ -372,7 +374,7 @@ def main():
         return 0
 
     failed_s, failed = 0.0, []
-    steps = 1
+    steps = max(1, args.min_steps)
     while True:
         ok, iterations, wall, assembly, reason = run_attempt(scene, steps)
         log("N = %d: %s, %.2f s (assembly %.2f s), Newton iterations per step %s%s"
