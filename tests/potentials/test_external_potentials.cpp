@@ -58,6 +58,42 @@ TEST_CASE("gravity and point loads: E, gradient and zero Hessian", "[potentials]
     CHECK(dense_hessian(E, x, Projection::none).cwiseAbs().maxCoeff() == 0.0);
 }
 
+TEST_CASE("gravity and point loads scaled by a load factor (load steps): E and gradient scale with it",
+          "[potentials][gravity][loads]")
+{
+    std::mt19937 rng(52);
+    const Mesh mesh = box_of_tets(2, 1, 1, 0.5);
+    const Eigen::VectorXd masses = lumped_masses(mesh, {1000.0});
+    const Eigen::Vector3d g(0.3, -1.0, -9.81);
+    auto gravity = std::make_shared<GravityPotential>(3, masses, g);
+    Eigen::MatrixXd forces(3, 2);
+    forces << 1, -2, 0, 5, -3, 1;
+    auto loads = std::make_shared<PointLoadPotential>(3, mesh.num_nodes(), std::vector<int>{2, 7}, forces);
+    TotalPotential E({gravity, loads});
+    const Eigen::VectorXd x = rest_coordinates(mesh) + 0.1 * Eigen::VectorXd::Random(3 * mesh.num_nodes());
+    const double full = E.value(x);
+    const Eigen::VectorXd full_gradient = gradient_of(E, x);
+    for (const double s : {0.0, 0.125, 0.5, 0.75, 1.0, 2.0}) {
+        CAPTURE(s);
+        gravity->set_scale(s);
+        loads->set_scale(s);
+        // E_s = −s Σ m_i g·x_i − s Σ f_k·x_(n_k): exactly s times the full load's.
+        double expected = 0.0;
+        for (int i = 0; i < mesh.num_nodes(); ++i)
+            expected -= s * masses[i] * g.dot(x.segment<3>(3 * i));
+        expected -= s * (forces.col(0).dot(x.segment<3>(6)) + forces.col(1).dot(x.segment<3>(21)));
+        CHECK(E.value(x) == Approx(expected).epsilon(1e-14).margin(1e-14 * std::abs(full)));
+        const Eigen::VectorXd gradient = gradient_of(E, x);
+        CHECK((gradient - s * full_gradient).cwiseAbs().maxCoeff() <= 1e-14 * full_gradient.cwiseAbs().maxCoeff());
+        if (s > 0.0)
+            CHECK(relative_error(gradient, finite_difference_gradient(E, x, 1e-6)) < 1e-8);
+        CHECK(dense_hessian(E, x, Projection::none).cwiseAbs().maxCoeff() == 0.0);
+    }
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    CHECK_THROWS_WITH(gravity->set_scale(nan), "gravity: scale is not finite");
+    CHECK_THROWS_WITH(loads->set_scale(std::numeric_limits<double>::infinity()), "point loads: scale is not finite");
+}
+
 namespace {
 
 /// Node positions scattered around the obstacle surface, even ones inside,
