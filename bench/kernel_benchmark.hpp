@@ -5,7 +5,9 @@
 namespace sinew {
 
 /// Throughput of one constitutive model: ψ + P + PSD-projected ∂P/∂F per
-/// evaluation, on one core, over distinct random deformation gradients.
+/// evaluation, on one core, over distinct random deformation gradients, in
+/// batches of 16 through ConstitutiveModel::evaluate_batch (as the assembly
+/// of the elastic potential calls it).
 struct KernelRun {
     std::string model;
     std::string shape;  ///< "3x3", "2x2", "3x2"

@@ -49,6 +49,18 @@ public:
     /// decompositions are shared.
     virtual double evaluate(const Deformation& F, const Point& point, Stress* P, Stiffness* dPdF,
                             Projection projection) const = 0;
+
+    /// evaluate for k < count: ψ(F[k]) into psi[k], and P, ∂P/∂F into P[k],
+    /// dPdF[k] when those arrays are not null. The default calls evaluate for
+    /// each; the 3×3 models that need the SVD of F compute the SVDs of the
+    /// batch side by side (svd_batch.hpp), the longest serial part of their
+    /// evaluation.
+    virtual void evaluate_batch(int count, const Deformation* F, const Point* points, double* psi, Stress* P,
+                                Stiffness* dPdF, Projection projection) const
+    {
+        for (int k = 0; k < count; ++k)
+            psi[k] = evaluate(F[k], points[k], P ? P + k : nullptr, dPdF ? dPdF + k : nullptr, projection);
+    }
 };
 
 using Model3d = ConstitutiveModel<3, 3>;

@@ -2,6 +2,7 @@
 
 #include "sinew/energies/models/determinant_derivatives.hpp"
 #include "sinew/energies/models/fast_rotation_variant_svd.hpp"
+#include "sinew/energies/models/svd_batch.hpp"
 #include "sinew/energies/models/isotropic_stiffness_modes.hpp"
 
 #include <algorithm>
@@ -37,10 +38,27 @@ double FixedCorotated::energy(const Deformation& F, const Point&) const
     return corotated_energy(mu_, lambda_, sigma, sigma.prod());
 }
 
-double FixedCorotated::evaluate(const Deformation& F, const Point&, Stress* P, Stiffness* dPdF,
+double FixedCorotated::evaluate(const Deformation& F, const Point& point, Stress* P, Stiffness* dPdF,
                                 Projection projection) const
 {
-    const RotationVariantSvd<3> svd = fast_rotation_variant_svd(F);
+    double psi = 0.0;
+    evaluate_batch(1, &F, &point, &psi, P, dPdF, projection);
+    return psi;
+}
+
+void FixedCorotated::evaluate_batch(int count, const Deformation* F, const Point* points, double* psi, Stress* P,
+                                    Stiffness* dPdF, Projection projection) const
+{
+    evaluate_with_svds(count, F, points, psi, P, dPdF, true,
+                       [&](const Deformation& Fk, const RotationVariantSvd<3>* svd, const Point&, Stress* Pk,
+                           Stiffness* dPdFk, DeferredRotation& deferred) {
+                           return evaluate_with_svd(Fk, *svd, Pk, dPdFk, projection, deferred);
+                       });
+}
+
+double FixedCorotated::evaluate_with_svd(const Deformation& F, const RotationVariantSvd<3>& svd, Stress* P,
+                                         Stiffness* dPdF, Projection projection, DeferredRotation& deferred) const
+{
     const Eigen::Vector3d& s = svd.sigma;
     const double J = s.prod();                        // J = σ₀σ₁σ₂ (σ₂ < 0 when inverted)
     const double volume_factor = lambda_ * (J - 1.0);  // λ (J − 1)
@@ -73,7 +91,8 @@ double FixedCorotated::evaluate(const Deformation& F, const Point&, Stress* P, S
             spectrum.scaling(2, 0) = spectrum.scaling(0, 2);
             spectrum.scaling(2, 1) = spectrum.scaling(1, 2);
             bool clamped = false;
-            rotate_svd_frame_stiffness(svd.U, svd.V, frame_of(clamp_spectrum(spectrum, clamped)), Accumulate::assign, H);
+            H.setZero();
+            deferred.add(frame_of(clamp_spectrum(spectrum, clamped)));
         } else {
             // ∂P/∂F = 2μ(𝕀 − ∂R/∂F) + λ vec(∂J/∂F) vec(∂J/∂F)ᵀ + λ(J − 1) ∂²J/∂F², with
             // ∂R/∂F = Σ_k 2/(σ_i + σ_j) t_k t_kᵀ over the twist modes t_k of the pairs (i, j)
@@ -85,7 +104,7 @@ double FixedCorotated::evaluate(const Deformation& F, const Point&, Stress* P, S
             add_determinant_hessian(volume_factor, F, H);
             ModeCorrection rotation_part;
             rotation_part.twist = -4.0 * mu_ * pair_sum.cwiseInverse();  // −2μ ∂R/∂F
-            add_mode_correction(svd, rotation_part, H);
+            deferred.add(frame_of(rotation_part));
         }
     }
     return corotated_energy(mu_, lambda_, s, J);

@@ -1,11 +1,14 @@
 #pragma once
 #include "sinew/energies/models/constitutive_model.hpp"
+#include "sinew/energies/models/rotation_variant_svd.hpp"
 #include "sinew/energies/models/model_parameters.hpp"
 
 #include <string>
 #include <vector>
 
 namespace sinew {
+
+struct DeferredRotation;
 
 /// Fixed corotated elasticity (Stomakhin, Howes, Schroeder, Teran 2012,
 /// "Energetically consistent invertible elasticity"):
@@ -37,8 +40,15 @@ public:
     /// either way.
     double evaluate(const Deformation& F, const Point& point, Stress* P, Stiffness* dPdF,
                     Projection projection) const override;
+    /// The SVDs of the batch side by side (svd_batch.hpp).
+    void evaluate_batch(int count, const Deformation* F, const Point* points, double* psi, Stress* P,
+                        Stiffness* dPdF, Projection projection) const override;
 
 private:
+    /// evaluate with F = U Σ Vᵀ given; a stiffness in the SVD frame goes to `deferred`.
+    double evaluate_with_svd(const Deformation& F, const RotationVariantSvd<3>& svd, Stress* P, Stiffness* dPdF,
+                             Projection projection, DeferredRotation& deferred) const;
+
     double mu_;      ///< μ, Pa
     double lambda_;  ///< λ, Pa
 };

@@ -105,16 +105,14 @@ inline ModeCorrection clamp_correction(const IsotropicStiffnessSpectrum& spectru
     return correction;
 }
 
-/// H += the terms of the correction, rotated from the SVD frame
-/// (rotate_svd_frame_stiffness).
-inline void add_mode_correction(const RotationVariantSvd<3>& svd, const ModeCorrection& correction,
-                                Eigen::Matrix<double, 9, 9>& H)
+/// The terms of the correction as frame blocks (svd_frame_stiffness.hpp).
+inline SvdFrameStiffness frame_of(const ModeCorrection& correction)
 {
     IsotropicStiffnessSpectrum terms;
     terms.twist = correction.twist;
     terms.flip = correction.flip;
     terms.scaling = correction.scaling;
-    rotate_svd_frame_stiffness(svd.U, svd.V, frame_of(terms), Accumulate::add, H);
+    return frame_of(terms);
 }
 
 } // namespace sinew

@@ -3,6 +3,7 @@
 #include "sinew/core/input_error.hpp"
 #include "sinew/energies/models/fast_rotation_variant_svd.hpp"
 #include "sinew/energies/models/psd_projection.hpp"
+#include "sinew/energies/models/svd_batch.hpp"
 #include "sinew/energies/models/svd_frame_stiffness.hpp"
 
 #include <algorithm>
@@ -408,13 +409,32 @@ double MooneyRivlinMuscle::energy(const Deformation& F, const Point& point) cons
 double MooneyRivlinMuscle::evaluate(const Deformation& F, const Point& point, Stress* P, Stiffness* dPdF,
                                     Projection projection) const
 {
+    double psi = 0.0;
+    evaluate_batch(1, &F, &point, &psi, P, dPdF, projection);
+    return psi;
+}
+
+void MooneyRivlinMuscle::evaluate_batch(int count, const Deformation* F, const Point* points, double* psi,
+                                        Stress* P, Stiffness* dPdF, Projection projection) const
+{
+    evaluate_with_svds(count, F, points, psi, P, dPdF, P || dPdF,
+                       [&](const Deformation& Fk, const RotationVariantSvd<3>* svd, const Point& point, Stress* Pk,
+                           Stiffness* dPdFk, DeferredRotation& deferred) {
+                           return evaluate_with_svd(Fk, svd, point, Pk, dPdFk, projection, deferred);
+                       });
+}
+
+double MooneyRivlinMuscle::evaluate_with_svd(const Deformation& F, const RotationVariantSvd<3>* known_svd,
+                                             const Point& point, Stress* P, Stiffness* dPdF,
+                                             Projection projection, DeferredRotation& deferred) const
+{
     if (!P && !dPdF)
         return energy(F, point);
     if (!F.allFinite())
         return undefined(P, dPdF);
     // §4.3, §5.4: F = U F̂ Vᵀ, F̂ = diag(σ) with U, V rotations; an inversion
     // puts its sign on σ₃ (the smallest |σ|).
-    const RotationVariantSvd<3> svd = fast_rotation_variant_svd(F);
+    const RotationVariantSvd<3>& svd = *known_svd;
     const Vec3& sigma = svd.sigma;
     const double c = threshold_;
     const double J = F.determinant();
@@ -490,10 +510,13 @@ double MooneyRivlinMuscle::evaluate(const Deformation& F, const Point& point, St
         }
     }
     Stiffness& K = *dPdF;
+    // The fiber part goes into K at once, the frame blocks to `deferred`
+    // (rotated to vec(F) with the rest of the batch).
     const auto assemble_exact = [&] {
-        rotate_svd_frame_stiffness(svd.U, svd.V, frame, Accumulate::assign, K);
+        K.setZero();
         if (fiber_force)
             add_fiber_stiffness(fiber, t.f, t.df, K);
+        deferred.add(frame);
     };
     if (projection != Projection::clamp) {
         assemble_exact();
@@ -526,14 +549,17 @@ double MooneyRivlinMuscle::evaluate(const Deformation& F, const Point& point, St
         const bool indefinite =
             indefinite_along_clamped_directions(frame, frame_fiber, block_clamped ? &block_negative : nullptr, fiber_clamped);
         if (!indefinite) {
-            assemble_exact();
+            // The test needs the whole exact ∂P/∂F now.
+            rotate_svd_frame_stiffness(svd.U, svd.V, frame, Accumulate::assign, K);
+            add_fiber_stiffness(fiber, t.f, t.df, K);
             if (positive_semidefinite(K))
                 return t.psi;
         }
     }
-    rotate_svd_frame_stiffness(svd.U, svd.V, projected, Accumulate::assign, K);
+    K.setZero();
     if (fiber_force)
         add_projected_fiber_stiffness(fiber, t.f, t.df, K);
+    deferred.add(projected);
     return t.psi;
 }
 

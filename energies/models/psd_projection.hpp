@@ -50,7 +50,7 @@ struct NegativePart3 {
 inline NegativePart3 negative_part_3x3(const Eigen::Matrix3d& A)
 {
     NegativePart3 out;
-    const detail::IsolatedEigenpair isolated = detail::isolated_eigenpair(A);
+    const detail::IsolatedEigenpair3 isolated = detail::isolated_eigenpair(A);
     if (isolated.scalar) {
         out.part.diagonal().setConstant(std::min(isolated.value, 0.0));
         return out;

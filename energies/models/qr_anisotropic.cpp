@@ -4,6 +4,7 @@
 #include "sinew/energies/models/determinant_derivatives.hpp"
 #include "sinew/energies/models/fast_rotation_variant_svd.hpp"
 #include "sinew/energies/models/isotropic_stiffness_modes.hpp"
+#include "sinew/energies/models/svd_batch.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -282,9 +283,8 @@ bool proven_indefinite(double shift, const QrState<3>& st, const RotationVariant
 /// PSD-ness is settled cheaply when possible: no term has a negative part
 /// (then H is PSD), or a direction proves H indefinite; otherwise by a
 /// Cholesky test of H + shift·I, shift = 1e-12 max|Hᵢⱼ|.
-void clamp_3d(const QrState<3>& st, const Mat<3>& F, Hessian<3>& H)
+void clamp_3d(const QrState<3>& st, const RotationVariantSvd<3>& svd, Hessian<3>& H, DeferredRotation& deferred)
 {
-    const RotationVariantSvd<3> svd = fast_rotation_variant_svd(F);
     const IsotropicStiffnessSpectrum spectrum = isotropic_spectrum(st, svd.sigma);
     const ModeCorrection correction = clamp_correction(spectrum);
     const bool isotropic_negative = correction.twist.any() || correction.flip.any() || correction.has_scaling;
@@ -293,7 +293,7 @@ void clamp_3d(const QrState<3>& st, const Mat<3>& F, Hessian<3>& H)
     const double shift = 1e-12 * H.cwiseAbs().maxCoeff();
     if (!proven_indefinite(shift, st, svd, spectrum) && is_positive_semidefinite(H))
         return;
-    add_mode_correction(svd, correction, H);
+    deferred.add(frame_of(correction));
     // A fiber's negative part: k(1 − 1/r)(a aᵀ) ⊗ (I − q qᵀ), the bending of a compressed fiber.
     for (const Fiber<3>* fiber : {&st.fiber, &st.second})
         if (fiber->has_negative_part())
@@ -393,6 +393,34 @@ template <int Dim>
 double QrAnisotropic<Dim>::evaluate(const Deformation& F, const Point& point, Stress* P, Stiffness* dPdF,
                                     Projection projection) const
 {
+    if constexpr (Dim == 3) {
+        double psi = 0.0;
+        evaluate_batch(1, &F, &point, &psi, P, dPdF, projection);
+        return psi;
+    } else {
+        return evaluate_with_svd(F, nullptr, point, P, dPdF, projection, nullptr);
+    }
+}
+
+template <int Dim>
+void QrAnisotropic<Dim>::evaluate_batch(int count, const Deformation* F, const Point* points, double* psi, Stress* P,
+                                        Stiffness* dPdF, Projection projection) const
+{
+    if constexpr (Dim == 3)
+        evaluate_with_svds(count, F, points, psi, P, dPdF, dPdF && projection == Projection::clamp,
+                           [&](const Deformation& Fk, const RotationVariantSvd<3>* svd, const Point& point,
+                               Stress* Pk, Stiffness* dPdFk, DeferredRotation& deferred) {
+                               return evaluate_with_svd(Fk, svd, point, Pk, dPdFk, projection, &deferred);
+                           });
+    else
+        Base::evaluate_batch(count, F, points, psi, P, dPdF, projection);
+}
+
+template <int Dim>
+double QrAnisotropic<Dim>::evaluate_with_svd(const Deformation& F, const RotationVariantSvd<3>* svd,
+                                             const Point& point, Stress* P, Stiffness* dPdF,
+                                             Projection projection, DeferredRotation* deferred) const
+{
     const QrState<Dim> st = make_state<Dim>(F, point, mu_, lambda_, kx_, ky_);
     if (P != nullptr)
         *P = stress_of<Dim>(st, F);
@@ -405,7 +433,7 @@ double QrAnisotropic<Dim>::evaluate(const Deformation& F, const Point& point, St
             if constexpr (Dim == 2)
                 clamp_2d(H);
             else
-                clamp_3d(st, F, H);
+                clamp_3d(st, *svd, H, *deferred);
         }
     }
     return energy_of<Dim>(st, F);

@@ -1,11 +1,14 @@
 #pragma once
 #include "sinew/energies/models/constitutive_model.hpp"
+#include "sinew/energies/models/rotation_variant_svd.hpp"
 #include "sinew/energies/models/model_parameters.hpp"
 
 #include <string>
 #include <vector>
 
 namespace sinew {
+
+struct DeferredRotation;
 
 /// QR-based anisotropic hyperelasticity with damage (AnisoMPM, seed 004 §3),
 /// for plane (Dim = 2) and volume (Dim = 3) elements. Docs:
@@ -68,6 +71,9 @@ public:
     /// analytic eigensystem, fiber terms exactly).
     double evaluate(const Deformation& F, const Point& point, Stress* P, Stiffness* dPdF,
                     Projection projection) const override;
+    /// 3D: the SVDs of the batch side by side (svd_batch.hpp), when clamping.
+    void evaluate_batch(int count, const Deformation* F, const Point* points, double* psi, Stress* P,
+                        Stiffness* dPdF, Projection projection) const override;
 
     /// The material frame B = [a₀ b₂ (b₃)], a proper rotation with B e₁ = a₀
     /// (a₀ normalized first). 2D: b₂ = a₀ turned by +90°. 3D: B is the
@@ -77,6 +83,11 @@ public:
     static Matrix material_frame(const Vector& fiber);
 
 private:
+    /// evaluate with F = U Σ Vᵀ given (3D; not null for ∂P/∂F with
+    /// Projection::clamp); a stiffness in the SVD frame goes to `deferred` (3D).
+    double evaluate_with_svd(const Deformation& F, const RotationVariantSvd<3>* svd, const Point& point, Stress* P,
+                             Stiffness* dPdF, Projection projection, DeferredRotation* deferred) const;
+
     double mu_;      ///< μ, Pa
     double lambda_;  ///< λ, Pa: the seed's coefficient of (J − 1)²/2 (not Lamé's λ)
     double kx_;      ///< kx, Pa: fiber stiffness along a₀

@@ -3,6 +3,7 @@
 #include "sinew/energies/models/determinant_derivatives.hpp"
 #include "sinew/energies/models/fast_rotation_variant_svd.hpp"
 #include "sinew/energies/models/isotropic_stiffness_modes.hpp"
+#include "sinew/energies/models/svd_batch.hpp"
 
 namespace sinew {
 
@@ -32,8 +33,27 @@ double StableNeoHookean::energy(const Deformation& F, const Point&) const
     return energy_of(F.squaredNorm(), F.determinant());
 }
 
-double StableNeoHookean::evaluate(const Deformation& F, const Point&, Stress* P, Stiffness* dPdF,
+double StableNeoHookean::evaluate(const Deformation& F, const Point& point, Stress* P, Stiffness* dPdF,
                                   Projection projection) const
+{
+    double psi = 0.0;
+    evaluate_batch(1, &F, &point, &psi, P, dPdF, projection);
+    return psi;
+}
+
+void StableNeoHookean::evaluate_batch(int count, const Deformation* F, const Point* points, double* psi, Stress* P,
+                                      Stiffness* dPdF, Projection projection) const
+{
+    const bool needs_svd = dPdF && projection == Projection::clamp;
+    evaluate_with_svds(count, F, points, psi, P, dPdF, needs_svd,
+                       [&](const Deformation& Fk, const RotationVariantSvd<3>* svd, const Point&, Stress* Pk,
+                           Stiffness* dPdFk, DeferredRotation& deferred) {
+                           return evaluate_with_svd(Fk, svd, Pk, dPdFk, projection, deferred);
+                       });
+}
+
+double StableNeoHookean::evaluate_with_svd(const Deformation& F, const RotationVariantSvd<3>* known_svd, Stress* P,
+                                           Stiffness* dPdF, Projection projection, DeferredRotation& deferred) const
 {
     const Eigen::Matrix3d dJdF = determinant_gradient(F);  // ∂J/∂F = cof F
     const double J = F.col(0).dot(dJdF.col(0));           // J = f₀ · (f₁ × f₂)
@@ -47,7 +67,7 @@ double StableNeoHookean::evaluate(const Deformation& F, const Point&, Stress* P,
             // The paper's analytic eigensystem (Smith et al. 2018; seed 000 §4.5
             // block structure): with J_i = ∂J/∂σ_i = Π_{m≠i} σ_m and ∂²J/∂σ_i∂σ_j = σ_k (i ≠ j, k the
             // third), twist_k = μ + c σ_k, flip_k = μ − c σ_k, scaling block μI + λ' ∇J∇Jᵀ + c ∂²J/∂σ².
-            const RotationVariantSvd<3> svd = fast_rotation_variant_svd(F);
+            const RotationVariantSvd<3>& svd = *known_svd;
             const Eigen::Vector3d& s = svd.sigma;
             const Eigen::Vector3d dJ(s[1] * s[2], s[0] * s[2], s[0] * s[1]);
             IsotropicStiffnessSpectrum spectrum;
@@ -65,7 +85,8 @@ double StableNeoHookean::evaluate(const Deformation& F, const Point&, Stress* P,
             const IsotropicStiffnessSpectrum projected = clamp_spectrum(spectrum, clamped);
             if (clamped) {
                 // ∂P/∂F = (V ⊗ U) (clamped frame blocks) (V ⊗ U)ᵀ, no exact ∂P/∂F needed.
-                rotate_svd_frame_stiffness(svd.U, svd.V, frame_of(projected), Accumulate::assign, H);
+                H.setZero();
+                deferred.add(frame_of(projected));
                 return energy_of(F.squaredNorm(), J);
             }
         }

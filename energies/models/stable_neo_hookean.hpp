@@ -1,11 +1,14 @@
 #pragma once
 #include "sinew/energies/models/constitutive_model.hpp"
+#include "sinew/energies/models/rotation_variant_svd.hpp"
 #include "sinew/energies/models/model_parameters.hpp"
 
 #include <string>
 #include <vector>
 
 namespace sinew {
+
+struct DeferredRotation;
 
 /// Stable Neo-Hookean (Smith, de Goes, Kim 2018, "Stable Neo-Hookean Flesh
 /// Simulation"), in the form without the log(I_C + 1) term:
@@ -33,8 +36,15 @@ public:
     /// from the clamped eigensystem (needs one SVD, skipped by Projection::none).
     double evaluate(const Deformation& F, const Point& point, Stress* P, Stiffness* dPdF,
                     Projection projection) const override;
+    /// The SVDs of the batch side by side (svd_batch.hpp), when clamping.
+    void evaluate_batch(int count, const Deformation* F, const Point* points, double* psi, Stress* P,
+                        Stiffness* dPdF, Projection projection) const override;
 
 private:
+    /// evaluate with F = U Σ Vᵀ given (needed, and not null, only for ∂P/∂F with
+    /// Projection::clamp); a stiffness in the SVD frame goes to `deferred`.
+    double evaluate_with_svd(const Deformation& F, const RotationVariantSvd<3>* svd, Stress* P, Stiffness* dPdF,
+                             Projection projection, DeferredRotation& deferred) const;
     /// ψ from I_C = ‖F‖² and J = det F.
     double energy_of(double squared_norm, double J) const;
 

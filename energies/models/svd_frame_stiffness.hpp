@@ -8,7 +8,11 @@
 // belong to the flip mode (E_ij + E_ji)/√2 and the twist mode (E_ij − E_ji)/√2.
 // Shared by the isotropic models' PSD projections (isotropic_stiffness_modes.hpp)
 // and the muscle model's assembly.
+#include "sinew/energies/models/lanes.hpp"
+
 #include <Eigen/Core>
+
+#include <algorithm>
 
 namespace sinew {
 
@@ -23,72 +27,106 @@ struct SvdFrameStiffness {
 /// Whether rotate_svd_frame_stiffness overwrites K or adds to it.
 enum class Accumulate { assign, add };
 
-/// K (=, +=) (V ⊗ U) K̂ (V ⊗ U)ᵀ for the frame stiffness K̂, in two
-/// contractions of three. With K̂_(b,d)[a, c] = K̂(a + 3b, c + 3d), which holds
-/// A_bd at [b, d], α of the pair (a, b) at [a, a] when b = d ≠ a, β of the pair
+/// One rotation of a frame stiffness K̂ to vec(F): K += (V ⊗ U) K̂ (V ⊗ U)ᵀ.
+struct FrameRotation {
+    const Eigen::Matrix3d* U;
+    const Eigen::Matrix3d* V;
+    const SvdFrameStiffness* frame;
+    Eigen::Matrix<double, 9, 9>* K;
+};
+
+namespace detail {
+
+/// (V ⊗ U) K̂ (V ⊗ U)ᵀ for one frame per lane of T, in two contractions of
+/// three. With K̂_(b,d)[a, c] = K̂(a + 3b, c + 3d), which holds A_bd at
+/// [b, d], α of the pair (a, b) at [a, a] when b = d ≠ a, β of the pair
 /// (b, d) at [d, b] when b ≠ d:
 ///   X_(b,d) = U K̂_(b,d) Uᵀ     (X_(b,b) = A_bb u_b u_bᵀ + Σ_{a≠b} α_ab u_a u_aᵀ,
 ///                               X_(b,d) = A_bd u_b u_dᵀ + β_bd u_d u_bᵀ, X_(d,b) = X_(b,d)ᵀ),
 /// then for each entry (i, k) of the 3×3 blocks, the 3×3 matrix
 /// G[b][d] = X_(b,d)[i, k] maps to K(i + 3r, k + 3s) = (V G Vᵀ)[r, s]. K is
-/// symmetric, so only the six entries (i, k) with i ≤ k are formed, each
-/// written to both halves; they are the six lanes of every step, which
-/// the compiler turns into packed arithmetic. About 400 multiply-adds against
-/// 2·9·81 for products with the 9×9 V ⊗ U.
+/// symmetric, so only the six entries (i, k) with i ≤ k are formed:
+/// store(row, column, value) receives each of the 81 entries once. About 400
+/// multiply-adds against 2·9·81 for products with the 9×9 V ⊗ U.
+template <typename T, typename Store>
+void rotate_frame_stiffness(const Matrix3<T>& U, const Matrix3<T>& V, const Matrix3<T>& A, const Vector3<T>& alpha,
+                            const Vector3<T>& beta, const Store& store)
+{
+    // weight[b][a]: the coefficient of u_a u_aᵀ in X_(b,b) (A_bb when a = b, else α of the pair (a, b)).
+    const T weight[3][3] = {{A(0, 0), alpha[2], alpha[1]}, {alpha[2], A(1, 1), alpha[0]}, {alpha[1], alpha[0], A(2, 2)}};
+    for (int i = 0; i < 3; ++i)
+        for (int k = i; k < 3; ++k) {
+            T G[3][3];  // G[b][d] = X_(b,d)[i, k]
+            for (int b = 0; b < 3; ++b)
+                G[b][b] = weight[b][0] * U(i, 0) * U(k, 0) + weight[b][1] * U(i, 1) * U(k, 1) +
+                          weight[b][2] * U(i, 2) * U(k, 2);
+            for (int pair = 0; pair < 3; ++pair) {
+                const int b = pair == 0 ? 1 : 0, d = pair == 2 ? 1 : 2;
+                // X_(b,d)[i, k] = A_bd U_ib U_kd + β_bd U_id U_kb; X_(d,b)[i, k] = X_(b,d)[k, i].
+                G[b][d] = A(b, d) * U(i, b) * U(k, d) + beta[pair] * U(i, d) * U(k, b);
+                G[d][b] = A(b, d) * U(k, b) * U(i, d) + beta[pair] * U(k, d) * U(i, b);
+            }
+            T VG[3][3];  // (V G)[r][d] = Σ_b V_rb G[b][d]
+            for (int r = 0; r < 3; ++r)
+                for (int d = 0; d < 3; ++d)
+                    VG[r][d] = V(r, 0) * G[0][d] + V(r, 1) * G[1][d] + V(r, 2) * G[2][d];
+            for (int r = 0; r < 3; ++r)
+                for (int s = 0; s < 3; ++s) {
+                    const T value = VG[r][0] * V(s, 0) + VG[r][1] * V(s, 1) + VG[r][2] * V(s, 2);  // (V G Vᵀ)[r][s]
+                    // (i + 3r, k + 3s) and its mirror; for i = k the (r, s) already cover both halves.
+                    store(i + 3 * r, k + 3 * s, value);
+                    if (i != k)
+                        store(k + 3 * s, i + 3 * r, value);
+                }
+        }
+}
+
+} // namespace detail
+
+/// rotations[m].K += (V ⊗ U) K̂ (V ⊗ U)ᵀ for m < count (svd_frame_stiffness
+/// above), kSimdLanes rotations at a time in SIMD lanes.
+inline void add_rotated_frame_stiffness(const FrameRotation* rotations, int count)
+{
+    using T = Lanes<kSimdLanes>;
+    for (int first = 0; first < count; first += kSimdLanes) {
+        const int lanes = std::min(kSimdLanes, count - first);
+        Matrix3<T> U, V, A;
+        Vector3<T> alpha, beta;
+        for (int j = 0; j < 3; ++j)
+            for (int i = 0; i < 3; ++i) {
+                U(i, j) = V(i, j) = A(i, j) = T(0.0);
+            }
+        alpha = beta = Vector3<T>{{T(0.0), T(0.0), T(0.0)}};
+        for (int k = 0; k < lanes; ++k) {
+            const FrameRotation& rotation = rotations[first + k];
+            for (int j = 0; j < 3; ++j) {
+                for (int i = 0; i < 3; ++i) {
+                    U(i, j).set_lane(k, (*rotation.U)(i, j));
+                    V(i, j).set_lane(k, (*rotation.V)(i, j));
+                    A(i, j).set_lane(k, rotation.frame->diagonal_block(i, j));
+                }
+                alpha[j].set_lane(k, rotation.frame->alpha[j]);
+                beta[j].set_lane(k, rotation.frame->beta[j]);
+            }
+        }
+        T staged[81];  // column-major, as K
+        detail::rotate_frame_stiffness(U, V, A, alpha, beta,
+                                       [&](int row, int column, const T& value) { staged[row + 9 * column] = value; });
+        double* destinations[kSimdLanes];
+        for (int k = 0; k < lanes; ++k)
+            destinations[k] = rotations[first + k].K->data();
+        add_lanes_to(staged, 81, destinations, lanes);
+    }
+}
+
+/// K (=, +=) (V ⊗ U) K̂ (V ⊗ U)ᵀ for one frame stiffness K̂.
 inline void rotate_svd_frame_stiffness(const Eigen::Matrix3d& U, const Eigen::Matrix3d& V,
                                        const SvdFrameStiffness& frame, Accumulate mode, Eigen::Matrix<double, 9, 9>& K)
 {
-    constexpr int kLanes = 6;
-    constexpr int kRow[kLanes] = {0, 0, 0, 1, 1, 2};  // the entries (i, k), i ≤ k
-    constexpr int kCol[kLanes] = {0, 1, 2, 1, 2, 2};
-    double Ui[3][kLanes], Uk[3][kLanes];  // U(i, a) and U(k, a) per lane
-    for (int a = 0; a < 3; ++a)
-        for (int lane = 0; lane < kLanes; ++lane) {
-            Ui[a][lane] = U(kRow[lane], a);
-            Uk[a][lane] = U(kCol[lane], a);
-        }
-    const Eigen::Matrix3d& A = frame.diagonal_block;
-    // weight[b][a]: the coefficient of u_a u_aᵀ in X_(b,b) (A_bb when a = b, else α of the pair (a, b)).
-    const double weight[3][3] = {{A(0, 0), frame.alpha[2], frame.alpha[1]},
-                                 {frame.alpha[2], A(1, 1), frame.alpha[0]},
-                                 {frame.alpha[1], frame.alpha[0], A(2, 2)}};
-    double G[3][3][kLanes];  // G[b][d][lane] = X_(b,d)[i, k]
-    for (int b = 0; b < 3; ++b)
-        for (int lane = 0; lane < kLanes; ++lane)
-            G[b][b][lane] = weight[b][0] * Ui[0][lane] * Uk[0][lane] + weight[b][1] * Ui[1][lane] * Uk[1][lane] +
-                            weight[b][2] * Ui[2][lane] * Uk[2][lane];
-    for (int pair = 0; pair < 3; ++pair) {
-        const int b = pair == 0 ? 1 : 0, d = pair == 2 ? 1 : 2;
-        const double scaling = A(b, d), mixing = frame.beta[pair];
-        for (int lane = 0; lane < kLanes; ++lane) {
-            // X_(b,d)[i, k] = A_bd U_ib U_kd + β_bd U_id U_kb; X_(d,b)[i, k] = X_(b,d)[k, i].
-            G[b][d][lane] = scaling * Ui[b][lane] * Uk[d][lane] + mixing * Ui[d][lane] * Uk[b][lane];
-            G[d][b][lane] = scaling * Uk[b][lane] * Ui[d][lane] + mixing * Uk[d][lane] * Ui[b][lane];
-        }
-    }
-    double VG[3][3][kLanes];  // (V G)[r][d] = Σ_b V_rb G[b][d]
-    for (int r = 0; r < 3; ++r)
-        for (int d = 0; d < 3; ++d)
-            for (int lane = 0; lane < kLanes; ++lane)
-                VG[r][d][lane] = V(r, 0) * G[0][d][lane] + V(r, 1) * G[1][d][lane] + V(r, 2) * G[2][d][lane];
-    for (int r = 0; r < 3; ++r)
-        for (int s = 0; s < 3; ++s) {
-            double T[kLanes];  // (V G Vᵀ)[r][s]
-            for (int lane = 0; lane < kLanes; ++lane)
-                T[lane] = VG[r][0][lane] * V(s, 0) + VG[r][1][lane] * V(s, 1) + VG[r][2][lane] * V(s, 2);
-            for (int lane = 0; lane < kLanes; ++lane) {
-                const int i = kRow[lane], k = kCol[lane];
-                // (i + 3r, k + 3s) and its mirror; for i = k the (r, s) already cover both halves.
-                if (mode == Accumulate::assign) {
-                    K(i + 3 * r, k + 3 * s) = T[lane];
-                    K(k + 3 * s, i + 3 * r) = T[lane];
-                } else {
-                    K(i + 3 * r, k + 3 * s) += T[lane];
-                    if (i != k)
-                        K(k + 3 * s, i + 3 * r) += T[lane];
-                }
-            }
-        }
+    if (mode == Accumulate::assign)
+        K.setZero();
+    const FrameRotation rotation{&U, &V, &frame, &K};
+    add_rotated_frame_stiffness(&rotation, 1);
 }
 
 } // namespace sinew

@@ -48,6 +48,9 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
+/// At most this many elements go to one ConstitutiveModel::evaluate_batch call.
+constexpr int kElementBatch = 16;
+
 std::string element_label(int element) { return "elastic potential: element " + std::to_string(element); }
 
 /// Runs `work` inside a parallel loop, keeping the first exception it throws
@@ -137,13 +140,17 @@ public:
     void add_gradient(ConstVectorRef x, VectorRef gradient) const override
     {
         double* out = gradient.data();
-        for_each_element([&](int e) {
-            typename Model::Stress P;
-            model(e).evaluate(deformation_gradient(x, e), points_[e], &P, nullptr, Projection::none);
-            const typename Kinematics::NodalVectors g = Kinematics::gradient(P, rest_inverse_[e], measure_[e]);
-            for (int a = 0; a < Kinematics::kNodes; ++a)
-                for (int i = 0; i < Rows; ++i)
-                    out[elements_(a, e) * Rows + i] += g(i, a);
+        for_each_batch(x, [&](const int* elements, int count, const Batch& batch) {
+            typename Model::Stress P[kElementBatch];
+            double psi[kElementBatch];
+            model(elements[0]).evaluate_batch(count, batch.F, batch.points, psi, P, nullptr, Projection::none);
+            for (int k = 0; k < count; ++k) {
+                const int e = elements[k];
+                const typename Kinematics::NodalVectors g = Kinematics::gradient(P[k], rest_inverse_[e], measure_[e]);
+                for (int a = 0; a < Kinematics::kNodes; ++a)
+                    for (int i = 0; i < Rows; ++i)
+                        out[elements_(a, e) * Rows + i] += g(i, a);
+            }
         });
     }
 
@@ -151,12 +158,16 @@ public:
                      VectorRef values) const override
     {
         double* out = values.data();
-        for_each_element([&](int e) {
-            typename Model::Stiffness dPdF;
-            model(e).evaluate(deformation_gradient(x, e), points_[e], nullptr, &dPdF, projection);
-            typename Kinematics::LocalHessian H;
-            Kinematics::lower_hessian(dPdF, rest_inverse_[e], measure_[e], H);
-            add_lower_triangle(H, &slots(0, e), out);
+        for_each_batch(x, [&](const int* elements, int count, const Batch& batch) {
+            typename Model::Stiffness dPdF[kElementBatch];
+            double psi[kElementBatch];
+            model(elements[0]).evaluate_batch(count, batch.F, batch.points, psi, nullptr, dPdF, projection);
+            for (int k = 0; k < count; ++k) {
+                const int e = elements[k];
+                typename Kinematics::LocalHessian H;
+                Kinematics::lower_hessian(dPdF[k], rest_inverse_[e], measure_[e], H);
+                add_lower_triangle(H, &slots(0, e), out);
+            }
         });
     }
 
@@ -202,11 +213,19 @@ public:
 private:
     const Model& model(int element) const { return *models_[groups_[element]]; }
 
-    /// Runs `add(e)` for every element in the assembly schedule: colors in
-    /// order, the blocks of a color in parallel, each block's elements in
-    /// order (assembly_schedule.hpp: deterministic for any thread count).
-    template <typename AddElement>
-    void for_each_element(const AddElement& add) const
+    /// F and the material point of the elements of one batch.
+    struct Batch {
+        typename Model::Deformation F[kElementBatch];
+        Point points[kElementBatch];
+    };
+
+    /// Runs `add(elements, count, batch)` over the assembly schedule in
+    /// batches: runs of at most kElementBatch consecutive elements of one block
+    /// that share a model, with their F and material points. Colors in order,
+    /// the blocks of a color in parallel, each block's elements in order
+    /// (assembly_schedule.hpp: deterministic for any thread count).
+    template <typename AddBatch>
+    void for_each_batch(ConstVectorRef x, const AddBatch& add) const
     {
         std::exception_ptr error;
         for (int c = 0; c < schedule_.num_colors() && !error; ++c) {
@@ -215,8 +234,20 @@ private:
 #pragma omp parallel for schedule(dynamic, 1)
             for (int b = first; b < last; ++b)
                 guarded(error, [&] {
-                    for (int k = schedule_.block_starts[b]; k < schedule_.block_starts[b + 1]; ++k)
-                        add(schedule_.elements[k]);
+                    Batch batch;
+                    const int end = schedule_.block_starts[b + 1];
+                    for (int k = schedule_.block_starts[b]; k < end;) {
+                        const int* elements = &schedule_.elements[k];
+                        int count = 0;
+                        while (count < kElementBatch && k + count < end &&
+                               groups_[elements[count]] == groups_[elements[0]]) {
+                            batch.F[count] = deformation_gradient(x, elements[count]);
+                            batch.points[count] = points_[elements[count]];
+                            ++count;
+                        }
+                        add(elements, count, batch);
+                        k += count;
+                    }
                 });
         }
         if (error)
