@@ -11,10 +11,12 @@
 // polynomial guess, and every choice (which eigenvalue is isolated, which
 // cross product spans a kernel, the order of two columns, the rare cases of
 // a zero, scalar or badly scaled matrix) is an arithmetic selection. So the
-// method is written once for a scalar type T (lanes.hpp): T = double for one
-// matrix, T = Lanes<W> for W matrices side by side in SIMD registers. One
-// SVD is a single chain of dependent square roots and divisions; the batch
-// runs W such chains in the instructions of one.
+// method is written once for a scalar type T (lanes.hpp): T = Lanes<W> for
+// the SVDs, W matrices side by side in SIMD registers (one SVD is a single
+// chain of dependent square roots and divisions; the batch runs W such
+// chains in the instructions of one), T = double for the isolated eigenpair
+// that the symmetric eigen-decomposition and the negative part take one
+// matrix at a time.
 #include "sinew/energies/models/lanes.hpp"
 #include "sinew/energies/models/rotation_variant_svd.hpp"
 

@@ -75,7 +75,6 @@ struct Lanes {
     friend Lanes operator-(const Lanes& a) { return of(-a.v); }
     Lanes& operator+=(const Lanes& b) { return *this = *this + b; }
     Lanes& operator-=(const Lanes& b) { return *this = *this - b; }
-    Lanes& operator*=(const Lanes& b) { return *this = *this * b; }
 
     friend LaneMask<W> operator<(const Lanes& a, const Lanes& b) { return {a.v < b.v}; }
     friend LaneMask<W> operator<=(const Lanes& a, const Lanes& b) { return {a.v <= b.v}; }
