@@ -1,14 +1,11 @@
 #pragma once
 #include "sinew/energies/models/constitutive_model.hpp"
-#include "sinew/energies/models/rotation_variant_svd.hpp"
 #include "sinew/energies/models/model_parameters.hpp"
 
 #include <string>
 #include <vector>
 
 namespace sinew {
-
-struct DeferredRotation;
 
 /// Fixed corotated elasticity (Stomakhin, Howes, Schroeder, Teran 2012,
 /// "Energetically consistent invertible elasticity"):
@@ -34,21 +31,16 @@ public:
 
     std::string name() const override { return kName; }
     double energy(const Deformation& F, const Point& point) const override;
-    /// ∂P/∂F analytic, ∂R/∂F as three twist-mode terms; Projection::clamp clamps
-    /// the negative eigenvalues of the singular-space eigensystem (one 3×3 block,
-    /// three twist and three flip modes) and assembles ∂P/∂F from it. One SVD
-    /// either way.
+    /// ∂P/∂F analytic from the singular-space eigensystem (one 3×3 block, three
+    /// twist and three flip modes, ∂R/∂F in the twist eigenvalues);
+    /// Projection::clamp clamps its negative eigenvalues. One SVD either way.
     double evaluate(const Deformation& F, const Point& point, Stress* P, Stiffness* dPdF,
                     Projection projection) const override;
-    /// The SVDs of the batch side by side (svd_batch.hpp).
+    /// Everything in SIMD lanes (isotropic_batch.hpp).
     void evaluate_batch(int count, const Deformation* F, const Point* points, double* psi, Stress* P,
                         Stiffness* dPdF, Projection projection) const override;
 
 private:
-    /// evaluate with F = U Σ Vᵀ given; a stiffness in the SVD frame goes to `deferred`.
-    double evaluate_with_svd(const Deformation& F, const RotationVariantSvd<3>& svd, Stress* P, Stiffness* dPdF,
-                             Projection projection, DeferredRotation& deferred) const;
-
     double mu_;      ///< μ, Pa
     double lambda_;  ///< λ, Pa
 };

@@ -110,12 +110,12 @@ private:
     static MaskVector<W> sign_bit() { return MaskVector<W>{} + static_cast<long long>(1ULL << 63); }
 };
 
-/// destinations[k][j] += values[j].lane(k) for j < count and k < lanes ≤ W:
-/// W results of one kernel run in lanes, added each to its own array. The
-/// values are transposed W entries at a time in registers, so that every
-/// destination receives whole vectors.
-template <int W>
-void add_lanes_to(const Lanes<W>* values, int count, double* const* destinations, int lanes)
+/// destinations[k][j] (+= when `add`, else =) values[j].lane(k) for j < count
+/// and k < lanes ≤ W: W results of one kernel run in lanes, each to its own
+/// array. The values are transposed W entries at a time in registers, so that
+/// every destination receives whole vectors.
+template <bool add, int W>
+void unpack_lanes_to(const Lanes<W>* values, int count, double* const* destinations, int lanes)
 {
     using Vector = DoubleVector<W>;
     int j = 0;
@@ -144,15 +144,32 @@ void add_lanes_to(const Lanes<W>* values, int count, double* const* destinations
                     columns[k][r] = rows[r][k];
         }
         for (int k = 0; k < lanes; ++k) {
-            Vector sum;
-            __builtin_memcpy(&sum, destinations[k] + j, sizeof(Vector));
-            sum += columns[k];
-            __builtin_memcpy(destinations[k] + j, &sum, sizeof(Vector));
+            Vector result = columns[k];
+            if constexpr (add) {
+                Vector sum;
+                __builtin_memcpy(&sum, destinations[k] + j, sizeof(Vector));
+                result += sum;
+            }
+            __builtin_memcpy(destinations[k] + j, &result, sizeof(Vector));
         }
     }
     for (; j < count; ++j)
         for (int k = 0; k < lanes; ++k)
-            destinations[k][j] += values[j].lane(k);
+            destinations[k][j] = add ? destinations[k][j] + values[j].lane(k) : values[j].lane(k);
+}
+
+/// destinations[k][j] += values[j].lane(k) (unpack_lanes_to).
+template <int W>
+void add_lanes_to(const Lanes<W>* values, int count, double* const* destinations, int lanes)
+{
+    unpack_lanes_to<true>(values, count, destinations, lanes);
+}
+
+/// destinations[k][j] = values[j].lane(k) (unpack_lanes_to).
+template <int W>
+void copy_lanes_to(const Lanes<W>* values, int count, double* const* destinations, int lanes)
+{
+    unpack_lanes_to<false>(values, count, destinations, lanes);
 }
 
 /// The scalar counterparts, so that a kernel template reads the same for

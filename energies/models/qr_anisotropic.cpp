@@ -3,14 +3,14 @@
 #include "sinew/core/input_error.hpp"
 #include "sinew/energies/models/determinant_derivatives.hpp"
 #include "sinew/energies/models/fast_rotation_variant_svd.hpp"
-#include "sinew/energies/models/isotropic_stiffness_modes.hpp"
-#include "sinew/energies/models/svd_batch.hpp"
+#include "sinew/energies/models/isotropic_batch.hpp"
+#include "sinew/energies/models/psd_projection.hpp"
+#include "sinew/energies/models/svd_frame_stiffness.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -53,7 +53,6 @@ struct Fiber {
 
     /// 1 − 1/r: the fiber's ∂P/∂F across q, divided by k; negative when compressed.
     double bending() const { return 1.0 - 1.0 / std::max(r, kMinFiberStretch); }
-    bool has_negative_part() const { return k > 0.0 && bending() < 0.0; }
 };
 
 template <int Dim>
@@ -69,246 +68,286 @@ Fiber<Dim> make_fiber(double k, const Vec<Dim>& a, const Mat<Dim>& F)
     return fiber;
 }
 
-/// What ψ, P and ∂P/∂F share at one F.
-template <int Dim>
-struct QrState {
-    Mat<Dim> cof;        ///< cof F = ∂J/∂F (= Q cof R Bᵀ)
-    double J = 1.0;      ///< det F = Π rᵢᵢ (§3.2: the sign convention makes them equal)
-    double alpha = 0.0;  ///< g μ: the shear terms Ψ^μ are always degraded (§3.6)
-    double beta = 0.0;   ///< g_λ λ: Ψ^λ degraded for J ≥ 1 only (§3.6)
-    double c = 0.0;      ///< β (J − 1) − α: the coefficient of ∂J/∂F in P
-    Fiber<Dim> fiber;    ///< kx along a₀
-    Fiber<Dim> second;   ///< ky along b₂ (3D with ky > 0; k = 0 otherwise)
-};
-
-template <int Dim>
-QrState<Dim> make_state(const Mat<Dim>& F, const MaterialPoint<Dim>& point, double mu, double lambda, double kx,
-                        double ky)
+/// The damage d of a material point; InputError outside [0, 1].
+double checked_damage(double d)
 {
-    const double d = point.damage;
     if (!(d >= 0.0 && d <= 1.0)) {
         std::ostringstream out;
         out << "model " << kModelName << ": damage d = " << d << " is outside [0, 1]";
         throw InputError(out.str());
     }
-    QrState<Dim> st;
-    if constexpr (Dim == 2)
-        st.cof << F(1, 1), -F(1, 0), -F(0, 1), F(0, 0);
-    else
-        st.cof = determinant_gradient(F);
+    return d;
+}
+
+// ---- Plane elements (Dim = 2), one F at a time in Eigen's types. ----
+
+/// What ψ, P and ∂P/∂F share at one F.
+struct PlaneState {
+    Mat<2> cof;          ///< cof F = ∂J/∂F (= Q cof R Bᵀ)
+    double J = 1.0;      ///< det F = r₁₁ r₂₂ (§3.2: the sign convention makes them equal)
+    double alpha = 0.0;  ///< g μ: the shear terms Ψ^μ are always degraded (§3.6)
+    double beta = 0.0;   ///< g_λ λ: Ψ^λ degraded for J ≥ 1 only (§3.6)
+    double c = 0.0;      ///< β (J − 1) − α: the coefficient of ∂J/∂F in P
+    Fiber<2> fiber;      ///< kx along a₀
+};
+
+PlaneState make_plane_state(const Mat<2>& F, const MaterialPoint<2>& point, double mu, double lambda, double kx)
+{
+    const double d = checked_damage(point.damage);
+    PlaneState st;
+    st.cof << F(1, 1), -F(1, 0), -F(0, 1), F(0, 0);
     st.J = F.col(0).dot(st.cof.col(0));
     const double g = (1.0 - d) * (1.0 - d);      // g(d) = (1 − d)², §3.6
     st.alpha = g * mu;                           // g Ψ^μ
     st.beta = (st.J >= 1.0 ? g : 1.0) * lambda;  // Ψ⁺ holds Ψ^λ for J ≥ 1, Ψ⁻ for J < 1
     st.c = st.beta * (st.J - 1.0) - st.alpha;
-    if (Dim == 3 && ky > 0.0) {
-        const Mat<Dim> B = QrAnisotropic<Dim>::material_frame(point.fiber);
-        st.fiber = make_fiber<Dim>(kx, B.col(0), F);
-        st.second = make_fiber<Dim>(ky, B.col(1), F);
-    } else {
-        st.fiber = make_fiber<Dim>(kx, unit_fiber<Dim>(point.fiber), F);
-    }
+    st.fiber = make_fiber<2>(kx, unit_fiber<2>(point.fiber), F);
     return st;
 }
 
 /// ψ = g Ψ^μ + g_λ Ψ^λ + Ψ^f (seed 004 §3.1, §3.6), with Σᵢⱼ rᵢⱼ² = ‖R‖² = ‖F‖²
 /// (Q, B rotations) and Π rᵢᵢ = det F. The seed's "Σ rᵢⱼ² − d" subtracts the
-/// dimension n = Dim (not the damage d).
-template <int Dim>
-double energy_of(const QrState<Dim>& st, const Mat<Dim>& F)
+/// dimension n (not the damage d).
+double plane_energy(const PlaneState& st, const Mat<2>& F)
 {
     const double Jm1 = st.J - 1.0;
-    double psi = 0.5 * st.alpha * (F.squaredNorm() - Dim) - st.alpha * Jm1  // g Ψ^μ
-                 + 0.5 * st.beta * Jm1 * Jm1;                                // g_λ Ψ^λ
-    // Ψ^f = kx/2 (r₁₁ − 1)² + ky/2 (√(r₁₂² + r₂₂²) − 1)², never degraded
-    for (const Fiber<Dim>* fiber : {&st.fiber, &st.second})
-        psi += 0.5 * fiber->k * (fiber->r - 1.0) * (fiber->r - 1.0);
-    return psi;
+    return 0.5 * st.alpha * (F.squaredNorm() - 2.0) - st.alpha * Jm1  // g Ψ^μ
+           + 0.5 * st.beta * Jm1 * Jm1                                // g_λ Ψ^λ
+           + 0.5 * st.fiber.k * (st.fiber.r - 1.0) * (st.fiber.r - 1.0);  // Ψ^f = kx/2 (r₁₁ − 1)²
 }
 
 /// P = Q A R⁻ᵀ Bᵀ (seed 004 §3.2) in the division-free form §3.5 shows
 /// exists. A R⁻ᵀ is, term by term, the gradient at X = R of ψ written in
-/// X = Qᵀ F B: ½Σrᵢⱼ² → R, J → cof R = J R⁻ᵀ, r₁₁ = ‖X e₁‖ → e₁e₁ᵀ,
-/// s = ‖X e₂‖ → (R e₂/s) e₂ᵀ; mapped back by Q(·)Bᵀ these are F, cof F,
-/// q₁ a₀ᵀ (q₁ = F a₀/r₁₁) and q_b b₂ᵀ (q_b = F b₂/s). Bounded as any rᵢᵢ → 0:
+/// X = Qᵀ F B: ½Σrᵢⱼ² → R, J → cof R = J R⁻ᵀ, r₁₁ = ‖X e₁‖ → e₁e₁ᵀ (and in 3D
+/// s = ‖X e₂‖ → (R e₂/s) e₂ᵀ); mapped back by Q(·)Bᵀ these are F, cof F and
+/// q₁ a₀ᵀ, q₁ = F a₀/r₁₁ (and q_b b₂ᵀ, q_b = F b₂/s). Bounded as any rᵢᵢ → 0:
 /// polynomial in F plus fiber forces of size k|r − 1|.
-template <int Dim>
-Mat<Dim> stress_of(const QrState<Dim>& st, const Mat<Dim>& F)
+Mat<2> plane_stress(const PlaneState& st, const Mat<2>& F)
 {
-    Mat<Dim> P = st.alpha * F + st.c * st.cof;  // g Ψ^μ + g_λ Ψ^λ
-    for (const Fiber<Dim>* fiber : {&st.fiber, &st.second})
-        P.noalias() += (fiber->k * (fiber->r - 1.0)) * fiber->q * fiber->a.transpose();  // k (r − 1) q aᵀ
-    return P;
+    const Fiber<2>& fiber = st.fiber;
+    // g Ψ^μ + g_λ Ψ^λ, then k (r − 1) q aᵀ
+    return st.alpha * F + st.c * st.cof + (fiber.k * (fiber.r - 1.0)) * fiber.q * fiber.a.transpose();
 }
 
-/// H += coefficient · (a aᵀ) ⊗ M on column-major vec(F): the block of
-/// columns (j, l) of F is coefficient a_j a_l M.
-template <int Dim>
-void add_fiber_product(double coefficient, const Vec<Dim>& a, const Mat<Dim>& M, Hessian<Dim>& H)
+/// ∂P/∂F. The isotropic part g Ψ^μ + g_λ Ψ^λ = α/2 ‖F‖² − α(J − 1) + β/2 (J − 1)²
+/// is a polynomial in F: α 𝕀 + β vec(cof F) vec(cof F)ᵀ + c ∂²J/∂F² (in the
+/// seed's chain, §3.3, the δQ terms of this rotation-invariant part cancel
+/// against those of δ(A R⁻ᵀ); this is what is left, with no division by rᵢᵢ).
+/// The fiber term by the seed's chain (§3.3–3.4) δP̃ = δQ (A R⁻ᵀ) + Q δ(A R⁻ᵀ)
+/// for T = k (r − 1) e₁e₁ᵀ: δQ turns the image, δq = Q Ω e₁ = (I − q qᵀ) δF a/r
+/// (§3.4.2), δT changes the length, δr = q·δF a (§3.4.1). Together
+/// (a aᵀ) ⊗ k [q qᵀ + (1 − 1/r)(I − q qᵀ)].
+Hessian<2> plane_stiffness(const PlaneState& st)
 {
-    for (int l = 0; l < Dim; ++l)
-        for (int j = 0; j < Dim; ++j)
-            H.template block<Dim, Dim>(Dim * j, Dim * l) += (coefficient * a(j) * a(l)) * M;
-}
-
-/// ∂P/∂F of one fiber term, the seed's chain (§3.3–3.4) δP̃ = δQ (A R⁻ᵀ) + Q δ(A R⁻ᵀ)
-/// for T = k (r − 1) e₁e₁ᵀ (the kx term; ky alike in its column): δQ turns the
-/// image, δq = Q Ω e₁ = ω₃ q₂ − ω₂ q₃ = (I − q qᵀ) δF a/r (ω₃ r₁₁ = X₂₁,
-/// −ω₂ r₁₁ = X₃₁, §3.4.2); δT changes the length, δr = q·δF a (∂R/∂F, §3.4.1).
-/// Together (a aᵀ) ⊗ k [q qᵀ + (1 − 1/r)(I − q qᵀ)].
-template <int Dim>
-void add_fiber_stiffness(const Fiber<Dim>& fiber, Hessian<Dim>& H)
-{
-    if (fiber.k == 0.0)
-        return;
-    const double bending = fiber.bending();
-    add_fiber_product<Dim>(fiber.k, fiber.a,
-                           bending * Mat<Dim>::Identity() + (1.0 - bending) * (fiber.q * fiber.q.transpose()), H);
-}
-
-/// ∂P/∂F of g Ψ^μ + g_λ Ψ^λ = α/2 ‖F‖² − α(J − 1) + β/2 (J − 1)², a polynomial
-/// in F: α 𝕀 + β vec(cof F) vec(cof F)ᵀ + c ∂²J/∂F². In the seed's chain (§3.3)
-/// the δQ terms of this rotation-invariant part cancel against those of δ(A R⁻ᵀ);
-/// this is what is left, with no division by rᵢᵢ.
-template <int Dim>
-void set_isotropic_stiffness(const QrState<Dim>& st, const Mat<Dim>& F, Hessian<Dim>& H)
-{
-    const Eigen::Map<const Vec<Dim * Dim>> cof(st.cof.data());  // vec(∂J/∂F)
-    H.noalias() = st.beta * cof * cof.transpose();
+    const Eigen::Map<const Vec<4>> cof(st.cof.data());  // vec(∂J/∂F)
+    Hessian<2> H = st.beta * cof * cof.transpose();
     H.diagonal().array() += st.alpha;
-    if constexpr (Dim == 2) {
-        // ∂²J/∂F²: J = F₀₀F₁₁ − F₀₁F₁₀, vec indices F₀₀ 0, F₁₀ 1, F₀₁ 2, F₁₁ 3.
-        H(0, 3) += st.c;
-        H(3, 0) += st.c;
-        H(1, 2) -= st.c;
-        H(2, 1) -= st.c;
-    } else {
-        add_determinant_hessian(st.c, F, H);
+    // ∂²J/∂F²: J = F₀₀F₁₁ − F₀₁F₁₀, vec indices F₀₀ 0, F₁₀ 1, F₀₁ 2, F₁₁ 3.
+    H(0, 3) += st.c;
+    H(3, 0) += st.c;
+    H(1, 2) -= st.c;
+    H(2, 1) -= st.c;
+    const Fiber<2>& fiber = st.fiber;
+    if (fiber.k != 0.0) {
+        const double bending = fiber.bending();
+        const Mat<2> block = fiber.k * (bending * Mat<2>::Identity() + (1.0 - bending) * (fiber.q * fiber.q.transpose()));
+        for (int l = 0; l < 2; ++l)
+            for (int j = 0; j < 2; ++j)
+                H.block<2, 2>(2 * j, 2 * l) += (fiber.a(j) * fiber.a(l)) * block;
     }
+    return H;
 }
 
-/// True when H + 1e-12 max|Hᵢⱼ| I has a Cholesky factorization: H is PSD up
-/// to rounding (its smallest eigenvalue is above about −1e-12 max|Hᵢⱼ|).
-template <int N>
-bool is_positive_semidefinite(const Eigen::Matrix<double, N, N>& H)
+/// Projection::clamp in 2D: H unchanged when H + 1e-12 max|Hᵢⱼ| I has a
+/// Cholesky factorization (PSD up to rounding), otherwise the nearest PSD
+/// matrix, V diag(max(λ, 0)) Vᵀ from the eigen-decomposition of the 4×4.
+void clamp_plane(Hessian<2>& H)
 {
-    Eigen::Matrix<double, N, N> shifted = H;
+    Hessian<2> shifted = H;
     shifted.diagonal().array() += 1e-12 * H.cwiseAbs().maxCoeff();
-    return Eigen::LLT<Eigen::Matrix<double, N, N>>(shifted).info() == Eigen::Success;
-}
-
-/// The spectrum of the isotropic part in F = U Σ Vᵀ (rotation-variant, signed
-/// σ), as for stable Neo-Hookean (Smith et al. 2018 §4–5): with
-/// ψᵢ = α σᵢ + c Jᵢ, twist α + c σₖ, flip α − c σₖ and the scaling block
-/// α I + β ∇J ∇Jᵀ + c ∂²J/∂σ² (∂²J/∂σᵢ∂σⱼ = σₖ off the diagonal). No
-/// division: exact at repeated and vanishing σ.
-IsotropicStiffnessSpectrum isotropic_spectrum(const QrState<3>& st, const Eigen::Vector3d& sigma)
-{
-    IsotropicStiffnessSpectrum spectrum;
-    spectrum.twist = Eigen::Vector3d::Constant(st.alpha) + st.c * sigma;
-    spectrum.flip = Eigen::Vector3d::Constant(st.alpha) - st.c * sigma;
-    const Eigen::Vector3d dJ(sigma[1] * sigma[2], sigma[0] * sigma[2], sigma[0] * sigma[1]);
-    spectrum.scaling = st.beta * dJ * dJ.transpose();
-    spectrum.scaling.diagonal().array() += st.alpha;
-    spectrum.scaling(0, 1) += st.c * sigma[2];
-    spectrum.scaling(0, 2) += st.c * sigma[1];
-    spectrum.scaling(1, 2) += st.c * sigma[0];
-    spectrum.scaling(1, 0) = spectrum.scaling(0, 1);
-    spectrum.scaling(2, 0) = spectrum.scaling(0, 2);
-    spectrum.scaling(2, 1) = spectrum.scaling(1, 2);
-    return spectrum;
-}
-
-/// wᵀ K w for the fiber's block K = k [q qᵀ + (1 − 1/r)(I − q qᵀ)]: the
-/// fiber term's quadratic form on vec(Y) is (Y a)ᵀ K (Y a).
-double fiber_quadratic_form(const Fiber<3>& fiber, const Vec<3>& w)
-{
-    const double bending = fiber.bending(), along = fiber.q.dot(w);
-    return fiber.k * (bending * w.squaredNorm() + (1.0 - bending) * along * along);
-}
-
-/// True when a cheap direction m proves H indefinite, mᵀ H m < −shift (then
-/// H + shift·I has no Cholesky factorization either). Directions tried:
-///  · per compressed fiber, m = vec(e aᵀ) with e a unit vector across q and
-///    across cof F·a. On this rank-one direction ∂²J vanishes (det is affine
-///    along F + t e aᵀ), so mᵀ H m = α + β (e·cof F a)² + Σ fibers (Y a_f)ᵀ K_f (Y a_f)
-///    with Y a_f = (a·a_f) e, no product with H: the isotropic part gives
-///    α (e·cof F a = 0 but for the fallback e), the fiber its bending k(1 − 1/r);
-///  · each negative twist or flip mode Y = (uᵢvⱼᵀ ∓ uⱼvᵢᵀ)/√2 of the isotropic
-///    part, an eigenvector of it: mᵀ H m = its eigenvalue + Σ fibers (Y a)ᵀ K (Y a).
-bool proven_indefinite(double shift, const QrState<3>& st, const RotationVariantSvd<3>& svd,
-                       const IsotropicStiffnessSpectrum& spectrum)
-{
-    const std::array<const Fiber<3>*, 2> fibers{&st.fiber, &st.second};
-    for (const Fiber<3>* fiber : fibers) {
-        if (!fiber->has_negative_part())
-            continue;
-        const Vec<3> image = st.cof * fiber->a;  // cof F a
-        Vec<3> e = fiber->q.cross(image);
-        if (!(e.squaredNorm() > 1e-24))
-            e = detail::unit_orthogonal(fiber->q);
-        e.normalize();
-        const double along_cofactor = e.dot(image);
-        double rayleigh = st.alpha + st.beta * along_cofactor * along_cofactor;
-        for (const Fiber<3>* other : fibers)
-            if (other->k != 0.0)
-                rayleigh += fiber_quadratic_form(*other, fiber->a.dot(other->a) * e);
-        if (rayleigh < -shift)
-            return true;
-    }
-    for (int k = 0; k < 3; ++k) {
-        int i = 0, j = 0;
-        pair_of(k, i, j);
-        for (const double sign : {-1.0, 1.0}) {  // twist, flip
-            double rayleigh = sign < 0.0 ? spectrum.twist[k] : spectrum.flip[k];
-            if (rayleigh >= 0.0)
-                continue;
-            for (const Fiber<3>* fiber : fibers) {
-                if (fiber->k == 0.0)
-                    continue;
-                const Vec<3> Ya = std::sqrt(0.5) * (svd.V.col(j).dot(fiber->a) * svd.U.col(i) +
-                                                    sign * svd.V.col(i).dot(fiber->a) * svd.U.col(j));
-                rayleigh += fiber_quadratic_form(*fiber, Ya);
-            }
-            if (rayleigh < -shift)
-                return true;
-        }
-    }
-    return false;
-}
-
-/// Projection::clamp in 3D: H unchanged when it is PSD, otherwise the sum of
-/// each term's PSD part: the isotropic part with its negative eigenvalues
-/// clamped (clamp_correction), each fiber with its negative bending dropped.
-/// PSD-ness is settled cheaply when possible: no term has a negative part
-/// (then H is PSD), or a direction proves H indefinite; otherwise by a
-/// Cholesky test of H + shift·I, shift = 1e-12 max|Hᵢⱼ|.
-void clamp_3d(const QrState<3>& st, const RotationVariantSvd<3>& svd, Hessian<3>& H, DeferredRotation& deferred)
-{
-    const IsotropicStiffnessSpectrum spectrum = isotropic_spectrum(st, svd.sigma);
-    const ModeCorrection correction = clamp_correction(spectrum);
-    const bool isotropic_negative = correction.twist.any() || correction.flip.any() || correction.has_scaling;
-    if (!isotropic_negative && !st.fiber.has_negative_part() && !st.second.has_negative_part())
-        return;
-    const double shift = 1e-12 * H.cwiseAbs().maxCoeff();
-    if (!proven_indefinite(shift, st, svd, spectrum) && is_positive_semidefinite(H))
-        return;
-    deferred.add(frame_of(correction));
-    // A fiber's negative part: k(1 − 1/r)(a aᵀ) ⊗ (I − q qᵀ), the bending of a compressed fiber.
-    for (const Fiber<3>* fiber : {&st.fiber, &st.second})
-        if (fiber->has_negative_part())
-            add_fiber_product<3>(-fiber->k * fiber->bending(), fiber->a,
-                                 Mat<3>::Identity() - fiber->q * fiber->q.transpose(), H);
-}
-
-/// Projection::clamp in 2D: H unchanged when it is PSD, otherwise the nearest
-/// PSD matrix, V diag(max(λ, 0)) Vᵀ from the eigen-decomposition of the 4×4.
-void clamp_2d(Hessian<2>& H)
-{
-    if (is_positive_semidefinite(H))
+    if (Eigen::LLT<Hessian<2>>(shifted).info() == Eigen::Success)
         return;
     const Eigen::SelfAdjointEigenSolver<Hessian<2>> eigen(H);
     H = eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).asDiagonal() * eigen.eigenvectors().transpose();
+}
+
+// ---- Volume elements (Dim = 3), kSimdLanes deformation gradients side by side. ----
+
+using L = Lanes<kSimdLanes>;
+
+/// A fiber term k/2 (‖F a‖ − 1)² per lane, as Fiber<Dim>.
+struct FiberLanes {
+    double k = 0.0;   ///< kx or ky, Pa
+    Vector3<L> a;     ///< unit material direction
+    Vector3<L> q;     ///< F a/r, the unit image (0 where r = 0)
+    L r;              ///< ‖F a‖
+    L bending;        ///< 1 − 1/r (r floored at kMinFiberStretch): ∂P/∂F across q, divided by k
+};
+
+FiberLanes fiber_lanes(double k, const Vector3<L>& a, const Matrix3<L>& F)
+{
+    FiberLanes fiber;
+    fiber.k = k;
+    fiber.a = a;
+    const Vector3<L> image = F * a;
+    fiber.r = sqrt(dot(image, image));
+    const auto stretched = fiber.r > 0.0;
+    fiber.q = select(stretched, (L(1.0) / select(stretched, fiber.r, L(1.0))) * image, Vector3<L>{{0.0, 0.0, 0.0}});
+    fiber.bending = 1.0 - 1.0 / max(fiber.r, L(kMinFiberStretch));
+    return fiber;
+}
+
+/// H += (coefficient a aᵀ) ⊗ M on column-major vec(F): the 3×3 block of the
+/// columns (j, l) of F is coefficient a_j a_l M, with M = m_I I + m_q q qᵀ.
+void add_fiber_product(const L& coefficient, const Vector3<L>& a, const L& m_I, const L& m_q, const Vector3<L>& q,
+                       L* H)
+{
+    for (int l = 0; l < 3; ++l)
+        for (int j = 0; j < 3; ++j) {
+            const L weight = coefficient * a[j] * a[l];
+            for (int m = 0; m < 3; ++m)
+                for (int i = 0; i < 3; ++i)
+                    H[(i + 3 * j) + 9 * (m + 3 * l)] += weight * ((i == m ? m_I : L(0.0)) + m_q * q[i] * q[m]);
+        }
+}
+
+/// The model's coefficients (Pa).
+struct VolumeCoefficients {
+    double mu, lambda, kx, ky;
+};
+
+/// ψ, P and ∂P/∂F (each may be skipped by a null pointer) of F[k] for
+/// k < count (ψ as plane_energy, P as plane_stress, ∂P/∂F as plane_stiffness,
+/// with the ky fiber along b₂). ∂P/∂F of the isotropic part is
+/// α 𝕀 + β vec(cof F) vec(cof F)ᵀ + c ∂²J/∂F², of a fiber
+/// (a aᵀ) ⊗ k [q qᵀ + (1 − 1/r)(I − q qᵀ)].
+///
+/// Projection::clamp: ∂P/∂F unchanged where it is PSD (a Cholesky test of
+/// ∂P/∂F + shift I, shift = 1e-12 max|Hᵢⱼ|, so that PSD matrices with zero
+/// modes such as the rest state pass); elsewhere the sum of each term's own PSD
+/// part: the isotropic part with its negative eigenvalues clamped through its
+/// analytic eigensystem in F = U Σ Vᵀ (rotation-variant, signed σ, as for
+/// stable Neo-Hookean, Smith et al. 2018 §4–5: with ψᵢ = α σᵢ + c Jᵢ, twist
+/// α + c σₖ, flip α − c σₖ, scaling block α I + β ∇J ∇Jᵀ + c ∂²J/∂σ²,
+/// ∂²J/∂σᵢ∂σⱼ = σₖ off the diagonal; no division, exact at repeated and
+/// vanishing σ), added as (V ⊗ U)(clamped − exact)(V ⊗ U)ᵀ; each fiber with its
+/// negative bending k(1 − 1/r)(a aᵀ) ⊗ (I − q qᵀ) of a compressed fiber removed.
+/// The Cholesky test runs only where a term has a negative part.
+void evaluate_volume_batch(const VolumeCoefficients& coefficients, int count, const Mat<3>* F,
+                           const MaterialPoint<3>* points, double* psi, Mat<3>* P, Hessian<3>* dPdF,
+                           Projection projection)
+{
+    const bool second_fiber = coefficients.ky > 0.0;
+    for (int first = 0; first < count; first += kSimdLanes) {
+        const int lanes = std::min(kSimdLanes, count - first);
+        Matrix3<L> Fl = detail::identity3<L>();
+        Vector3<L> a0{{1.0, 0.0, 0.0}}, b2{{0.0, 1.0, 0.0}};
+        L g(1.0);
+        for (int k = 0; k < lanes; ++k) {
+            const MaterialPoint<3>& point = points[first + k];
+            const double d = checked_damage(point.damage);
+            g.set_lane(k, (1.0 - d) * (1.0 - d));  // g(d) = (1 − d)², §3.6
+            // The ky term needs the frame's second axis b₂, the kx term a₀ alone.
+            const Mat<3> B = second_fiber ? QrAnisotropic<3>::material_frame(point.fiber) : Mat<3>::Zero();
+            const Vec<3> a = second_fiber ? Vec<3>(B.col(0)) : unit_fiber<3>(point.fiber);
+            for (int i = 0; i < 3; ++i) {
+                a0[i].set_lane(k, a[i]);
+                b2[i].set_lane(k, B(i, 1));
+                for (int j = 0; j < 3; ++j)
+                    Fl(i, j).set_lane(k, F[first + k](i, j));
+            }
+        }
+        // cof F = ∂J/∂F, columns f₁ × f₂, f₂ × f₀, f₀ × f₁; J = det F = f₀ · (f₁ × f₂).
+        const Matrix3<L> cof = determinant_gradient(Fl);
+        const L J = dot(Fl.col[0], cof.col[0]), Jm1 = J - 1.0;
+        const L alpha = g * coefficients.mu;                                // g Ψ^μ
+        const L beta = select(J >= 1.0, g, L(1.0)) * coefficients.lambda;  // g_λ Ψ^λ: degraded for J ≥ 1 only
+        const L c = beta * Jm1 - alpha;                                     // the coefficient of ∂J/∂F in P
+        FiberLanes fibers[2] = {fiber_lanes(coefficients.kx, a0, Fl), fiber_lanes(coefficients.ky, b2, Fl)};
+        const int fiber_count = second_fiber ? 2 : 1;
+
+        // ψ = α/2 (‖F‖² − 3) − α (J − 1) + β/2 (J − 1)² + Σ k/2 (r − 1)²
+        L energy = (0.5 * alpha) * (dot(Fl.col[0], Fl.col[0]) + dot(Fl.col[1], Fl.col[1]) + dot(Fl.col[2], Fl.col[2]) - 3.0) -
+                   alpha * Jm1 + (0.5 * beta) * Jm1 * Jm1;
+        for (int f = 0; f < fiber_count; ++f)
+            energy += (0.5 * fibers[f].k) * (fibers[f].r - 1.0) * (fibers[f].r - 1.0);
+        for (int k = 0; k < lanes; ++k)
+            psi[first + k] = energy.lane(k);
+        double* destinations[kSimdLanes];
+        if (P) {
+            L stress[9];  // P = α F + c cof F + Σ k (r − 1) q aᵀ, column-major
+            for (int j = 0; j < 3; ++j)
+                for (int i = 0; i < 3; ++i) {
+                    stress[i + 3 * j] = alpha * Fl(i, j) + c * cof(i, j);
+                    for (int f = 0; f < fiber_count; ++f)
+                        stress[i + 3 * j] += (fibers[f].k * (fibers[f].r - 1.0)) * fibers[f].q[i] * fibers[f].a[j];
+                }
+            for (int k = 0; k < lanes; ++k)
+                destinations[k] = P[first + k].data();
+            copy_lanes_to(stress, 9, destinations, lanes);
+        }
+        if (!dPdF)
+            continue;
+
+        L H[81];  // column-major, as ∂P/∂F
+        // α 𝕀 + β vec(cof F) vec(cof F)ᵀ
+        for (int column = 0; column < 9; ++column)
+            for (int row = 0; row < 9; ++row)
+                H[row + 9 * column] = beta * cof(row % 3, row / 3) * cof(column % 3, column / 3) +
+                                      (row == column ? alpha : L(0.0));
+        add_determinant_hessian(c, Fl, H);  // + c ∂²J/∂F²
+        // + Σ (a aᵀ) ⊗ k [(1 − 1/r) I + (1/r) q qᵀ]
+        for (int f = 0; f < fiber_count; ++f)
+            add_fiber_product(L(fibers[f].k), fibers[f].a, fibers[f].bending, 1.0 - fibers[f].bending, fibers[f].q, H);
+
+        if (projection == Projection::clamp) {
+            const detail::Svd3<L> svd = detail::rotation_variant_svd_of(Fl);
+            const Vector3<L>& s = svd.sigma;
+            const Matrix3<L> scaling = scaling_block(alpha, beta, c, s);
+            const Matrix3<L> clamped = detail::clamp_symmetric_3x3(scaling);
+            Vector3<L> twist_raise, flip_raise;  // clamped − exact eigenvalue: max(λ, 0) − λ
+            // Where a term has a negative part: a compressed fiber, a negative twist or
+            // flip eigenvalue, a scaling block the clamp changes.
+            auto negative = L(fibers[0].k) > 0.0 && fibers[0].bending < 0.0;
+            for (int f = 1; f < fiber_count; ++f)
+                negative = negative || (L(fibers[f].k) > 0.0 && fibers[f].bending < 0.0);
+            for (int k = 0; k < 3; ++k) {
+                const L twist = alpha + c * s[k], flip = alpha - c * s[k];
+                twist_raise[k] = max(twist, L(0.0)) - twist;
+                flip_raise[k] = max(flip, L(0.0)) - flip;
+                negative = negative || twist < 0.0 || flip < 0.0;
+                for (int i = 0; i < 3; ++i)
+                    negative = negative || clamped(i, k) < scaling(i, k) || clamped(i, k) > scaling(i, k);
+            }
+            if (any(negative)) {
+                L size(0.0);
+                for (const L& entry : H)
+                    size = max(size, abs(entry));
+                const auto project = negative && !detail::cholesky_succeeds<9>(H, 1e-12 * size);
+                if (any(project)) {
+                    // The frame blocks of the correction: α − β the twist, α + β the flip raise.
+                    Matrix3<L> scaling_raise;
+                    Vector3<L> alpha_raise, beta_raise;
+                    for (int k = 0; k < 3; ++k) {
+                        for (int i = 0; i < 3; ++i)
+                            scaling_raise(i, k) = select(project, clamped(i, k) - scaling(i, k), L(0.0));
+                        alpha_raise[k] = select(project, 0.5 * (twist_raise[k] + flip_raise[k]), L(0.0));
+                        beta_raise[k] = select(project, 0.5 * (flip_raise[k] - twist_raise[k]), L(0.0));
+                    }
+                    detail::rotate_frame_stiffness(svd.U, svd.V, scaling_raise, alpha_raise, beta_raise,
+                                                   [&](int row, int column, const L& value) { H[row + 9 * column] += value; });
+                    for (int f = 0; f < fiber_count; ++f) {
+                        const FiberLanes& fiber = fibers[f];
+                        const L removed = select(project && fiber.bending < 0.0, -fiber.k * fiber.bending, L(0.0));
+                        add_fiber_product(removed, fiber.a, L(1.0), L(-1.0), fiber.q, H);
+                    }
+                }
+            }
+        }
+        for (int k = 0; k < lanes; ++k)
+            destinations[k] = dPdF[first + k].data();
+        copy_lanes_to(H, 81, destinations, lanes);
+    }
 }
 
 ParameterSpec pascal_parameter(const std::string& name, double default_value, bool positive,
@@ -386,57 +425,37 @@ typename QrAnisotropic<Dim>::Matrix QrAnisotropic<Dim>::material_frame(const Vec
 template <int Dim>
 double QrAnisotropic<Dim>::energy(const Deformation& F, const Point& point) const
 {
-    return energy_of<Dim>(make_state<Dim>(F, point, mu_, lambda_, kx_, ky_), F);
+    return evaluate(F, point, nullptr, nullptr, Projection::none);
 }
 
 template <int Dim>
 double QrAnisotropic<Dim>::evaluate(const Deformation& F, const Point& point, Stress* P, Stiffness* dPdF,
                                     Projection projection) const
 {
-    if constexpr (Dim == 3) {
-        double psi = 0.0;
-        evaluate_batch(1, &F, &point, &psi, P, dPdF, projection);
-        return psi;
-    } else {
-        return evaluate_with_svd(F, nullptr, point, P, dPdF, projection, nullptr);
-    }
+    double psi = 0.0;
+    evaluate_batch(1, &F, &point, &psi, P, dPdF, projection);
+    return psi;
 }
 
 template <int Dim>
 void QrAnisotropic<Dim>::evaluate_batch(int count, const Deformation* F, const Point* points, double* psi, Stress* P,
                                         Stiffness* dPdF, Projection projection) const
 {
-    if constexpr (Dim == 3)
-        evaluate_with_svds(count, F, points, psi, P, dPdF, dPdF && projection == Projection::clamp,
-                           [&](const Deformation& Fk, const RotationVariantSvd<3>* svd, const Point& point,
-                               Stress* Pk, Stiffness* dPdFk, DeferredRotation& deferred) {
-                               return evaluate_with_svd(Fk, svd, point, Pk, dPdFk, projection, &deferred);
-                           });
-    else
-        Base::evaluate_batch(count, F, points, psi, P, dPdF, projection);
-}
-
-template <int Dim>
-double QrAnisotropic<Dim>::evaluate_with_svd(const Deformation& F, const RotationVariantSvd<3>* svd,
-                                             const Point& point, Stress* P, Stiffness* dPdF,
-                                             Projection projection, DeferredRotation* deferred) const
-{
-    const QrState<Dim> st = make_state<Dim>(F, point, mu_, lambda_, kx_, ky_);
-    if (P != nullptr)
-        *P = stress_of<Dim>(st, F);
-    if (dPdF != nullptr) {
-        Stiffness& H = *dPdF;
-        set_isotropic_stiffness<Dim>(st, F, H);
-        add_fiber_stiffness<Dim>(st.fiber, H);
-        add_fiber_stiffness<Dim>(st.second, H);
-        if (projection == Projection::clamp) {
-            if constexpr (Dim == 2)
-                clamp_2d(H);
-            else
-                clamp_3d(st, *svd, H, *deferred);
+    if constexpr (Dim == 3) {
+        evaluate_volume_batch({mu_, lambda_, kx_, ky_}, count, F, points, psi, P, dPdF, projection);
+    } else {
+        for (int k = 0; k < count; ++k) {
+            const PlaneState st = make_plane_state(F[k], points[k], mu_, lambda_, kx_);
+            if (P)
+                P[k] = plane_stress(st, F[k]);
+            if (dPdF) {
+                dPdF[k] = plane_stiffness(st);
+                if (projection == Projection::clamp)
+                    clamp_plane(dPdF[k]);
+            }
+            psi[k] = plane_energy(st, F[k]);
         }
     }
-    return energy_of<Dim>(st, F);
 }
 
 template class QrAnisotropic<2>;

@@ -1,14 +1,11 @@
 #pragma once
 #include "sinew/energies/models/constitutive_model.hpp"
-#include "sinew/energies/models/rotation_variant_svd.hpp"
 #include "sinew/energies/models/model_parameters.hpp"
 
 #include <string>
 #include <vector>
 
 namespace sinew {
-
-struct DeferredRotation;
 
 /// QR-based anisotropic hyperelasticity with damage (AnisoMPM, seed 004 §3),
 /// for plane (Dim = 2) and volume (Dim = 3) elements. Docs:
@@ -63,15 +60,16 @@ public:
     double energy(const Deformation& F, const Point& point) const override;
 
     /// ψ, P and ∂P/∂F sharing cof F, J and the fiber images. Projection::clamp
-    /// returns ∂P/∂F itself when it is PSD (cheap tests, else a Cholesky test
-    /// with a 1e-12 relative shift so that PSD matrices with zero modes such as
-    /// the rest state pass); otherwise 2D:
+    /// returns ∂P/∂F itself when it is PSD (a Cholesky test with a 1e-12
+    /// relative shift, so that PSD matrices with zero modes such as the rest
+    /// state pass; run only where a term has a negative part); otherwise 2D:
     /// the nearest PSD matrix (4×4 eigen-decomposition); 3D: the sum of each
     /// term's own PSD part, in closed form (isotropic part through its
     /// analytic eigensystem, fiber terms exactly).
     double evaluate(const Deformation& F, const Point& point, Stress* P, Stiffness* dPdF,
                     Projection projection) const override;
-    /// 3D: the SVDs of the batch side by side (svd_batch.hpp), when clamping.
+    /// 3D: every step in SIMD lanes, kSimdLanes elements side by side (the SVD
+    /// only for Projection::clamp); 2D: one element at a time.
     void evaluate_batch(int count, const Deformation* F, const Point* points, double* psi, Stress* P,
                         Stiffness* dPdF, Projection projection) const override;
 
@@ -83,11 +81,6 @@ public:
     static Matrix material_frame(const Vector& fiber);
 
 private:
-    /// evaluate with F = U Σ Vᵀ given (3D; not null for ∂P/∂F with
-    /// Projection::clamp); a stiffness in the SVD frame goes to `deferred` (3D).
-    double evaluate_with_svd(const Deformation& F, const RotationVariantSvd<3>* svd, const Point& point, Stress* P,
-                             Stiffness* dPdF, Projection projection, DeferredRotation* deferred) const;
-
     double mu_;      ///< μ, Pa
     double lambda_;  ///< λ, Pa: the seed's coefficient of (J − 1)²/2 (not Lamé's λ)
     double kx_;      ///< kx, Pa: fiber stiffness along a₀

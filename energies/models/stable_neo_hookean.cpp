@@ -1,9 +1,7 @@
 #include "sinew/energies/models/stable_neo_hookean.hpp"
 
 #include "sinew/energies/models/determinant_derivatives.hpp"
-#include "sinew/energies/models/fast_rotation_variant_svd.hpp"
-#include "sinew/energies/models/isotropic_stiffness_modes.hpp"
-#include "sinew/energies/models/svd_batch.hpp"
+#include "sinew/energies/models/isotropic_batch.hpp"
 
 namespace sinew {
 
@@ -21,16 +19,49 @@ StableNeoHookean::StableNeoHookean(const ParameterValues& parameters)
 {
 }
 
-double StableNeoHookean::energy_of(double squared_norm, double J) const
+namespace {
+
+/// ψ from I_C = ‖F‖² and J = det F.
+template <typename T>
+T stable_neo_hookean_energy(double mu, double lambda_stable, const T& squared_norm, const T& J)
 {
     // ψ = μ/2 (I_C − 3) − μ (J − 1) + λ'/2 (J − 1)²,  I_C = ‖F‖²  (Smith et al. 2018, without the log term),
     // the last two terms as (J − 1)(λ'/2 (J − 1) − μ) so that |J| = ∞ gives +∞, not ∞ − ∞.
-    return 0.5 * mu_ * (squared_norm - 3.0) + (J - 1.0) * (0.5 * lambda_stable_ * (J - 1.0) - mu_);
+    return (0.5 * mu) * (squared_norm - 3.0) + (J - 1.0) * ((0.5 * lambda_stable) * (J - 1.0) - mu);
 }
+
+/// ψ, P and the analytic eigensystem of ∂P/∂F at lanes of F = U Σ Vᵀ (isotropic_batch.hpp).
+template <typename T>
+IsotropicResponse<T> stable_neo_hookean_response(double mu, double lambda_stable, const Matrix3<T>& F,
+                                                 const detail::Svd3<T>& svd)
+{
+    // ∂J/∂F = cof F, columns f₁ × f₂, f₂ × f₀, f₀ × f₁; J = f₀ · (f₁ × f₂).
+    const Matrix3<T> dJdF = determinant_gradient(F);
+    const T J = dot(F.col[0], dJdF.col[0]);
+    const T c = lambda_stable * (J - 1.0) - mu;  // c = λ'(J − 1) − μ
+    IsotropicResponse<T> out;
+    out.psi = stable_neo_hookean_energy(mu, lambda_stable,
+                                        dot(F.col[0], F.col[0]) + dot(F.col[1], F.col[1]) + dot(F.col[2], F.col[2]), J);
+    for (int j = 0; j < 3; ++j)
+        out.P.col[j] = T(mu) * F.col[j] + c * dJdF.col[j];  // P = μF + (λ'(J − 1) − μ) ∂J/∂F
+    // The paper's analytic eigensystem (Smith et al. 2018; seed 000 §4.5 block
+    // structure): with J_i = ∂J/∂σ_i = Π_{m≠i} σ_m and ∂²J/∂σ_i∂σ_j = σ_k (i ≠ j,
+    // k the third), twist_k = μ + c σ_k, flip_k = μ − c σ_k, scaling block
+    // μI + λ' ∇J∇Jᵀ + c ∂²J/∂σ².
+    const Vector3<T>& s = svd.sigma;
+    for (int k = 0; k < 3; ++k) {
+        out.twist[k] = mu + c * s[k];
+        out.flip[k] = mu - c * s[k];
+    }
+    out.scaling = scaling_block(T(mu), T(lambda_stable), c, s);
+    return out;
+}
+
+} // namespace
 
 double StableNeoHookean::energy(const Deformation& F, const Point&) const
 {
-    return energy_of(F.squaredNorm(), F.determinant());
+    return stable_neo_hookean_energy(mu_, lambda_stable_, F.squaredNorm(), F.determinant());
 }
 
 double StableNeoHookean::evaluate(const Deformation& F, const Point& point, Stress* P, Stiffness* dPdF,
@@ -41,19 +72,21 @@ double StableNeoHookean::evaluate(const Deformation& F, const Point& point, Stre
     return psi;
 }
 
-void StableNeoHookean::evaluate_batch(int count, const Deformation* F, const Point* points, double* psi, Stress* P,
+void StableNeoHookean::evaluate_batch(int count, const Deformation* F, const Point*, double* psi, Stress* P,
                                       Stiffness* dPdF, Projection projection) const
 {
-    const bool needs_svd = dPdF && projection == Projection::clamp;
-    evaluate_with_svds(count, F, points, psi, P, dPdF, needs_svd,
-                       [&](const Deformation& Fk, const RotationVariantSvd<3>* svd, const Point&, Stress* Pk,
-                           Stiffness* dPdFk, DeferredRotation& deferred) {
-                           return evaluate_with_svd(Fk, svd, Pk, dPdFk, projection, deferred);
-                       });
+    if (dPdF && projection == Projection::clamp) {
+        // The clamped eigensystem needs the SVD: all of it in SIMD lanes.
+        evaluate_isotropic_batch(count, F, psi, P, dPdF, projection, [&](const auto& Fk, const auto& svd) {
+            return stable_neo_hookean_response(mu_, lambda_stable_, Fk, svd);
+        });
+        return;
+    }
+    for (int k = 0; k < count; ++k)
+        psi[k] = evaluate_exact(F[k], P ? P + k : nullptr, dPdF ? dPdF + k : nullptr);
 }
 
-double StableNeoHookean::evaluate_with_svd(const Deformation& F, const RotationVariantSvd<3>* known_svd, Stress* P,
-                                           Stiffness* dPdF, Projection projection, DeferredRotation& deferred) const
+double StableNeoHookean::evaluate_exact(const Deformation& F, Stress* P, Stiffness* dPdF) const
 {
     const Eigen::Matrix3d dJdF = determinant_gradient(F);  // ∂J/∂F = cof F
     const double J = F.col(0).dot(dJdF.col(0));           // J = f₀ · (f₁ × f₂)
@@ -62,41 +95,14 @@ double StableNeoHookean::evaluate_with_svd(const Deformation& F, const RotationV
     if (P)
         *P = mu_ * F + c * dJdF;  // P = μF + (λ'(J − 1) − μ) ∂J/∂F
     if (dPdF) {
-        Stiffness& H = *dPdF;
-        if (projection == Projection::clamp) {
-            // The paper's analytic eigensystem (Smith et al. 2018; seed 000 §4.5
-            // block structure): with J_i = ∂J/∂σ_i = Π_{m≠i} σ_m and ∂²J/∂σ_i∂σ_j = σ_k (i ≠ j, k the
-            // third), twist_k = μ + c σ_k, flip_k = μ − c σ_k, scaling block μI + λ' ∇J∇Jᵀ + c ∂²J/∂σ².
-            const RotationVariantSvd<3>& svd = *known_svd;
-            const Eigen::Vector3d& s = svd.sigma;
-            const Eigen::Vector3d dJ(s[1] * s[2], s[0] * s[2], s[0] * s[1]);
-            IsotropicStiffnessSpectrum spectrum;
-            spectrum.twist = Eigen::Vector3d::Constant(mu_) + c * s;
-            spectrum.flip = Eigen::Vector3d::Constant(mu_) - c * s;
-            spectrum.scaling = lambda_stable_ * dJ * dJ.transpose();
-            spectrum.scaling.diagonal().array() += mu_;
-            spectrum.scaling(0, 1) += c * s[2];
-            spectrum.scaling(0, 2) += c * s[1];
-            spectrum.scaling(1, 2) += c * s[0];
-            spectrum.scaling(1, 0) = spectrum.scaling(0, 1);
-            spectrum.scaling(2, 0) = spectrum.scaling(0, 2);
-            spectrum.scaling(2, 1) = spectrum.scaling(1, 2);
-            bool clamped = false;
-            const IsotropicStiffnessSpectrum projected = clamp_spectrum(spectrum, clamped);
-            if (clamped) {
-                // ∂P/∂F = (V ⊗ U) (clamped frame blocks) (V ⊗ U)ᵀ, no exact ∂P/∂F needed.
-                H.setZero();
-                deferred.add(frame_of(projected));
-                return energy_of(F.squaredNorm(), J);
-            }
-        }
         // ∂P/∂F = μ𝕀 + λ' vec(∂J/∂F) vec(∂J/∂F)ᵀ + c ∂²J/∂F²
+        Stiffness& H = *dPdF;
         const Eigen::Map<const Eigen::Matrix<double, 9, 1>> g(dJdF.data());
         H.noalias() = lambda_stable_ * g * g.transpose();
         H.diagonal().array() += mu_;
         add_determinant_hessian(c, F, H);
     }
-    return energy_of(F.squaredNorm(), J);
+    return stable_neo_hookean_energy(mu_, lambda_stable_, F.squaredNorm(), J);
 }
 
 } // namespace sinew

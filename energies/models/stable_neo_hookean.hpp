@@ -1,14 +1,11 @@
 #pragma once
 #include "sinew/energies/models/constitutive_model.hpp"
-#include "sinew/energies/models/rotation_variant_svd.hpp"
 #include "sinew/energies/models/model_parameters.hpp"
 
 #include <string>
 #include <vector>
 
 namespace sinew {
-
-struct DeferredRotation;
 
 /// Stable Neo-Hookean (Smith, de Goes, Kim 2018, "Stable Neo-Hookean Flesh
 /// Simulation"), in the form without the log(I_C + 1) term:
@@ -32,21 +29,17 @@ public:
     std::string name() const override { return kName; }
     double energy(const Deformation& F, const Point& point) const override;
     /// ∂P/∂F analytic in F; Projection::clamp clamps the 9 eigenvalues of the
-    /// paper's analytic eigensystem and, when one was negative, assembles ∂P/∂F
-    /// from the clamped eigensystem (needs one SVD, skipped by Projection::none).
+    /// paper's analytic eigensystem and assembles ∂P/∂F from it (needs one SVD,
+    /// skipped by Projection::none).
     double evaluate(const Deformation& F, const Point& point, Stress* P, Stiffness* dPdF,
                     Projection projection) const override;
-    /// The SVDs of the batch side by side (svd_batch.hpp), when clamping.
+    /// With Projection::clamp and ∂P/∂F, everything in SIMD lanes (isotropic_batch.hpp).
     void evaluate_batch(int count, const Deformation* F, const Point* points, double* psi, Stress* P,
                         Stiffness* dPdF, Projection projection) const override;
 
 private:
-    /// evaluate with F = U Σ Vᵀ given (needed, and not null, only for ∂P/∂F with
-    /// Projection::clamp); a stiffness in the SVD frame goes to `deferred`.
-    double evaluate_with_svd(const Deformation& F, const RotationVariantSvd<3>* svd, Stress* P, Stiffness* dPdF,
-                             Projection projection, DeferredRotation& deferred) const;
-    /// ψ from I_C = ‖F‖² and J = det F.
-    double energy_of(double squared_norm, double J) const;
+    /// ψ, P and the exact ∂P/∂F from F alone (no SVD).
+    double evaluate_exact(const Deformation& F, Stress* P, Stiffness* dPdF) const;
 
     double mu_;             ///< μ, Pa
     double lambda_stable_;  ///< λ' = λ + μ, Pa: the energy's own coefficient

@@ -6,7 +6,7 @@
 // block on (δF̂₀₀, δF̂₁₁, δF̂₂₂) and for each pair (i, j), i < j, a 2×2 block
 // [[α, β], [β, α]] on (δF̂_ij, δF̂_ji), whose eigenvalues α + β and α − β
 // belong to the flip mode (E_ij + E_ji)/√2 and the twist mode (E_ij − E_ji)/√2.
-// Shared by the isotropic models' PSD projections (isotropic_stiffness_modes.hpp)
+// Shared by the isotropic models' PSD projections (isotropic_batch.hpp)
 // and the muscle model's assembly.
 #include "sinew/energies/models/lanes.hpp"
 
