@@ -55,10 +55,7 @@ namespace detail {
 template <typename T>
 Matrix3<T> clamp_symmetric_3x3(const Matrix3<T>& A)
 {
-    const T minor2 = A(0, 0) * A(1, 1) - A(0, 1) * A(0, 1);
-    const T det = A(0, 0) * (A(1, 1) * A(2, 2) - A(1, 2) * A(1, 2)) - A(0, 1) * (A(0, 1) * A(2, 2) - A(1, 2) * A(0, 2)) +
-                  A(0, 2) * (A(0, 1) * A(1, 2) - A(1, 1) * A(0, 2));
-    const auto definite = A(0, 0) > 0.0 && minor2 > 0.0 && det > 0.0;
+    const auto definite = positive_definite_3x3(A);
     if (!any(!definite))
         return A;
     const Matrix3<T> negative = negative_part(A).part;

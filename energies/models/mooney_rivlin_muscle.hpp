@@ -6,7 +6,6 @@
 // the places where the seed is wrong or ambiguous:
 // docs/energies.md (mooney-rivlin-muscle).
 #include "sinew/energies/models/constitutive_model.hpp"
-#include "sinew/energies/models/rotation_variant_svd.hpp"
 #include "sinew/energies/models/model_parameters.hpp"
 #include "sinew/energies/models/muscle_fiber_curves.hpp"
 
@@ -14,8 +13,6 @@
 #include <vector>
 
 namespace sinew {
-
-struct DeferredRotation;
 
 /// How the fiber stretch is measured (seed 000 §4.3.3, WARNING).
 enum class FiberStretch {
@@ -56,7 +53,7 @@ public:
     /// and the fiber tension derivative f' raised to zero.
     double evaluate(const Deformation& F, const Point& point, Stress* P, Stiffness* dPdF,
                     Projection projection) const override;
-    /// The SVDs of the batch side by side (svd_batch.hpp), when P or ∂P/∂F is asked.
+    /// kSimdLanes elements side by side (evaluate_lanes).
     void evaluate_batch(int count, const Deformation* F, const Point* points, double* psi, Stress* P,
                         Stiffness* dPdF, Projection projection) const override;
 
@@ -72,14 +69,11 @@ private:
     struct Validated {};
     MooneyRivlinMuscle(Validated, const ParameterValues& checked);
 
-    /// What ψ is made of at F given L (the thresholded ln J); defined in the .cpp.
-    struct Terms;
-    Terms terms(const Deformation& F, double L, const Point& point) const;
-
-    /// evaluate with F = U Σ Vᵀ given (not null when P or ∂P/∂F is asked); the
-    /// blocks in the SVD frame go to `deferred`.
-    double evaluate_with_svd(const Deformation& F, const RotationVariantSvd<3>* svd, const Point& point, Stress* P,
-                             Stiffness* dPdF, Projection projection, DeferredRotation& deferred) const;
+    /// ψ (and P, ∂P/∂F when not null) of F[k] for k < lanes ≤ kSimdLanes, side by
+    /// side in SIMD lanes (lanes.hpp), every step but the fiber curves and
+    /// exp/ln, which run lane by lane.
+    void evaluate_lanes(int lanes, const Deformation* F, const Point* points, double* psi, Stress* P,
+                        Stiffness* dPdF, Projection projection) const;
 
     double A_;  ///< Pa
     double B_;  ///< Pa

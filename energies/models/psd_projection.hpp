@@ -1,35 +1,16 @@
 #pragma once
+// The pieces of the models' PSD projections (seed 000 §5.6): the negative part
+// of a symmetric 3×3 matrix in closed form, Sylvester's criterion, and the
+// Cholesky test of "K + shift·I is positive definite", each written once for
+// one matrix (T = double) or one per SIMD lane (T = Lanes<W>, lanes.hpp).
 #include "sinew/energies/models/fast_rotation_variant_svd.hpp"
 
 #include <Eigen/Core>
-#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
 
 namespace sinew {
-
-/// Projects a symmetric matrix onto the PSD cone: A = Q Λ Qᵀ with every
-/// eigenvalue below zero clamped to zero. Skips the eigen-decomposition when
-/// A is diagonally dominant with a non-negative diagonal (then already PSD).
-template <int N>
-void project_to_psd(Eigen::Matrix<double, N, N>& A)
-{
-    bool dominant = true;
-    for (int i = 0; i < A.rows() && dominant; ++i) {
-        double off = 0.0;
-        for (int j = 0; j < A.cols(); ++j)
-            if (j != i)
-                off += std::abs(A(i, j));
-        dominant = A(i, i) >= off;
-    }
-    if (dominant)
-        return;
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, N, N>> eig(A);
-    const auto clamped = eig.eigenvalues().cwiseMax(0.0);
-    A = eig.eigenvectors() * clamped.asDiagonal() * eig.eigenvectors().transpose();
-}
-
 namespace detail {
 
 /// The negative part A₋ = Σ_{ν<0} ν q qᵀ of a symmetric 3×3 matrix A (so that
@@ -87,6 +68,18 @@ NegativePart<T> negative_part(const Matrix3<T>& A)
     const Vector3<T> in_plane_unit = (T(1.0) / sqrt(dot(in_plane, in_plane))) * in_plane;
     out.direction = select(isolated.scalar, unit_x<T>(), select(isolated.value < 0.0, v, in_plane_unit));
     return out;
+}
+
+/// Whether the symmetric 3×3 matrix A is positive definite, by Sylvester's
+/// criterion (its leading principal minors are positive); per lane for
+/// T = Lanes<W>.
+template <typename T>
+auto positive_definite_3x3(const Matrix3<T>& A)
+{
+    const T minor2 = A(0, 0) * A(1, 1) - A(0, 1) * A(0, 1);
+    const T det = A(0, 0) * (A(1, 1) * A(2, 2) - A(1, 2) * A(1, 2)) - A(0, 1) * (A(0, 1) * A(2, 2) - A(1, 2) * A(0, 2)) +
+                  A(0, 2) * (A(0, 1) * A(1, 2) - A(1, 1) * A(0, 2));
+    return A(0, 0) > 0.0 && minor2 > 0.0 && det > 0.0;
 }
 
 /// Whether the symmetric N×N matrix K + shift·I (K column-major, K[i + N j])

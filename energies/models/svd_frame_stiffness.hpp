@@ -12,7 +12,6 @@
 
 #include <Eigen/Core>
 
-#include <algorithm>
 
 namespace sinew {
 
@@ -26,14 +25,6 @@ struct SvdFrameStiffness {
 
 /// Whether rotate_svd_frame_stiffness overwrites K or adds to it.
 enum class Accumulate { assign, add };
-
-/// One rotation of a frame stiffness K̂ to vec(F): K += (V ⊗ U) K̂ (V ⊗ U)ᵀ.
-struct FrameRotation {
-    const Eigen::Matrix3d* U;
-    const Eigen::Matrix3d* V;
-    const SvdFrameStiffness* frame;
-    Eigen::Matrix<double, 9, 9>* K;
-};
 
 namespace detail {
 
@@ -83,50 +74,25 @@ void rotate_frame_stiffness(const Matrix3<T>& U, const Matrix3<T>& V, const Matr
 
 } // namespace detail
 
-/// rotations[m].K += (V ⊗ U) K̂ (V ⊗ U)ᵀ for m < count (svd_frame_stiffness
-/// above), kSimdLanes rotations at a time in SIMD lanes.
-inline void add_rotated_frame_stiffness(const FrameRotation* rotations, int count)
-{
-    using T = Lanes<kSimdLanes>;
-    for (int first = 0; first < count; first += kSimdLanes) {
-        const int lanes = std::min(kSimdLanes, count - first);
-        Matrix3<T> U, V, A;
-        Vector3<T> alpha, beta;
-        for (int j = 0; j < 3; ++j)
-            for (int i = 0; i < 3; ++i) {
-                U(i, j) = V(i, j) = A(i, j) = T(0.0);
-            }
-        alpha = beta = Vector3<T>{{T(0.0), T(0.0), T(0.0)}};
-        for (int k = 0; k < lanes; ++k) {
-            const FrameRotation& rotation = rotations[first + k];
-            for (int j = 0; j < 3; ++j) {
-                for (int i = 0; i < 3; ++i) {
-                    U(i, j).set_lane(k, (*rotation.U)(i, j));
-                    V(i, j).set_lane(k, (*rotation.V)(i, j));
-                    A(i, j).set_lane(k, rotation.frame->diagonal_block(i, j));
-                }
-                alpha[j].set_lane(k, rotation.frame->alpha[j]);
-                beta[j].set_lane(k, rotation.frame->beta[j]);
-            }
-        }
-        T staged[81];  // column-major, as K
-        detail::rotate_frame_stiffness(U, V, A, alpha, beta,
-                                       [&](int row, int column, const T& value) { staged[row + 9 * column] = value; });
-        double* destinations[kSimdLanes];
-        for (int k = 0; k < lanes; ++k)
-            destinations[k] = rotations[first + k].K->data();
-        add_lanes_to(staged, 81, destinations, lanes);
-    }
-}
-
-/// K (=, +=) (V ⊗ U) K̂ (V ⊗ U)ᵀ for one frame stiffness K̂.
+/// K (=, +=) (V ⊗ U) K̂ (V ⊗ U)ᵀ for one frame stiffness K̂ in Eigen's types
+/// (the batched models call detail::rotate_frame_stiffness in lanes).
 inline void rotate_svd_frame_stiffness(const Eigen::Matrix3d& U, const Eigen::Matrix3d& V,
                                        const SvdFrameStiffness& frame, Accumulate mode, Eigen::Matrix<double, 9, 9>& K)
 {
+    Matrix3<double> u, v, A;
+    Vector3<double> alpha, beta;
+    for (int j = 0; j < 3; ++j) {
+        for (int i = 0; i < 3; ++i) {
+            u(i, j) = U(i, j);
+            v(i, j) = V(i, j);
+            A(i, j) = frame.diagonal_block(i, j);
+        }
+        alpha[j] = frame.alpha[j];
+        beta[j] = frame.beta[j];
+    }
     if (mode == Accumulate::assign)
         K.setZero();
-    const FrameRotation rotation{&U, &V, &frame, &K};
-    add_rotated_frame_stiffness(&rotation, 1);
+    detail::rotate_frame_stiffness(u, v, A, alpha, beta, [&](int row, int column, double value) { K(row, column) += value; });
 }
 
 } // namespace sinew
