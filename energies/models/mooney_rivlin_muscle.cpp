@@ -217,6 +217,19 @@ Wide exact_quadratic_form(const FrameBlocks& frame, const FrameFiber& fiber, con
     return value + t * Gz * Gz - 2.0 * s * xz * xz + s * state.inverse_mu * state.inverse_mu * dot(Zf, Zf);
 }
 
+/// exact_quadratic_form along the mode (E_ij + sign E_ji)/√2 of pair m, in
+/// closed form: Ẑ has no diagonal (G·z = x·z), Ẑ_ij² + Ẑ_ji² = 1, 2Ẑ_ijẐ_ji = sign
+/// and Ẑ f_m = (f_m,j e_i + sign f_m,i e_j)/√2, so the form is
+/// α + sign β + (t − 2s)(x·z)² + (s/μ²)(f_m,i² + f_m,j²)/2.
+Wide pair_mode_quadratic_form(const FrameBlocks& frame, const FrameFiber& fiber, const FiberState& state, int m,
+                              double sign, const Wide& t, const Wide& s)
+{
+    const int i = kPairs[m][0], j = kPairs[m][1];
+    const Wide xz = std::sqrt(0.5) * (fiber.n_hat[i] * fiber.fm[j] + sign * fiber.n_hat[j] * fiber.fm[i]) * state.inverse_mu;
+    return frame.alpha[m] + sign * frame.beta[m] + (t - 2.0 * s) * xz * xz +
+           (0.5 * s) * state.inverse_mu * state.inverse_mu * (fiber.fm[i] * fiber.fm[i] + fiber.fm[j] * fiber.fm[j]);
+}
+
 ParameterSpec number(const std::string& name, double default_value, const std::string& unit,
                      const std::string& description, double lower, double upper, bool lower_exclusive)
 {
@@ -523,17 +536,11 @@ void MooneyRivlinMuscle::evaluate_lanes(int lanes, const Deformation* F, const P
                 for (int i = 0; i < 3; ++i)
                     Z(i, j) = i == j ? block_negative[i] : Wide(0.0);
             WideMask indefinite = block_clamped && negative_along(Z);
-            for (int m = 0; m < 3; ++m) {
-                const int i = kPairs[m][0], j = kPairs[m][1];
+            for (int m = 0; m < 3; ++m)
                 for (const double sign : {1.0, -1.0}) {
-                    for (int q = 0; q < 3; ++q)
-                        for (int r = 0; r < 3; ++r)
-                            Z(r, q) = Wide(0.0);
-                    Z(i, j) = std::sqrt(0.5);
-                    Z(j, i) = sign * std::sqrt(0.5);
-                    indefinite = indefinite || ((sign > 0.0 ? plus_negative[m] : minus_negative[m]) && negative_along(Z));
+                    const Wide form = pair_mode_quadratic_form(frame, frame_fiber, fiber, m, sign, t, s);
+                    indefinite = indefinite || ((sign > 0.0 ? plus_negative[m] : minus_negative[m]) && form < 0.0);
                 }
-            }
             for (int j = 0; j < 3; ++j)
                 for (int i = 0; i < 3; ++i)
                     Z(i, j) = frame_fiber.n_hat[i] * frame_fiber.fm[j];
@@ -558,8 +565,9 @@ void MooneyRivlinMuscle::evaluate_lanes(int lanes, const Deformation* F, const P
         if (deviatoric && fiber_terms)
             remove_negative_pair(fiber, t_plus, s_plus, !exact && fiber_force, K);
     }
-    for (Wide& entry : K)
-        entry = select(defined, entry, Wide(0.0));
+    if (any(!defined))
+        for (Wide& entry : K)
+            entry = select(defined, entry, Wide(0.0));
     for (int k = 0; k < lanes; ++k)
         destinations[k] = dPdF[k].data();
     copy_lanes_to(K, 81, destinations, lanes);

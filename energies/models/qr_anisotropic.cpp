@@ -202,12 +202,16 @@ FiberLanes fiber_lanes(double k, const Vector3<L>& a, const Matrix3<L>& F)
 void add_fiber_product(const L& coefficient, const Vector3<L>& a, const L& m_I, const L& m_q, const Vector3<L>& q,
                        L* H)
 {
+    L M[3][3];
+    for (int m = 0; m < 3; ++m)
+        for (int i = 0; i < 3; ++i)
+            M[i][m] = (i == m ? m_I : L(0.0)) + m_q * q[i] * q[m];
     for (int l = 0; l < 3; ++l)
         for (int j = 0; j < 3; ++j) {
             const L weight = coefficient * a[j] * a[l];
             for (int m = 0; m < 3; ++m)
                 for (int i = 0; i < 3; ++i)
-                    H[(i + 3 * j) + 9 * (m + 3 * l)] += weight * ((i == m ? m_I : L(0.0)) + m_q * q[i] * q[m]);
+                    H[(i + 3 * j) + 9 * (m + 3 * l)] += weight * M[i][m];
         }
 }
 
