@@ -8,6 +8,7 @@
 
 #include <Eigen/LU>
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -121,10 +122,29 @@ public:
     double value(ConstVectorRef x) override
     {
         const int count = num_elements();
+        const int chunks = (count + kElementBatch - 1) / kElementBatch;
         std::exception_ptr error;
+        // ψ alone, in runs of consecutive elements of one model (evaluate_batch
+        // with no P or ∂P/∂F: several elements side by side in SIMD lanes).
 #pragma omp parallel for schedule(static)
-        for (int e = 0; e < count; ++e)
-            guarded(error, [&] { energies_[e] = measure_[e] * model(e).energy(deformation_gradient(x, e), points_[e]); });
+        for (int chunk = 0; chunk < chunks; ++chunk)
+            guarded(error, [&] {
+                Batch batch;
+                double psi[kElementBatch];
+                const int end = std::min(count, (chunk + 1) * kElementBatch);
+                for (int first = chunk * kElementBatch; first < end;) {
+                    int run = 0;
+                    while (first + run < end && groups_[first + run] == groups_[first]) {
+                        batch.F[run] = deformation_gradient(x, first + run);
+                        batch.points[run] = points_[first + run];
+                        ++run;
+                    }
+                    model(first).evaluate_batch(run, batch.F, batch.points, psi, nullptr, nullptr, Projection::none);
+                    for (int k = 0; k < run; ++k)
+                        energies_[first + k] = measure_[first + k] * psi[k];
+                    first += run;
+                }
+            });
         if (error)
             std::rethrow_exception(error);
         // A fixed order of summation, whatever the threads did.
