@@ -53,8 +53,8 @@ public:
     /// evaluate for k < count: ψ(F[k]) into psi[k], and P, ∂P/∂F into P[k],
     /// dPdF[k] when those arrays are not null. The default calls evaluate for
     /// each; the 3×3 models that need the SVD of F evaluate several elements
-    /// side by side in SIMD lanes (isotropic_batch.hpp, the QR model), or at
-    /// least their SVDs (svd_batch.hpp, the muscle model).
+    /// side by side in SIMD lanes (isotropic_batch.hpp, the QR and muscle
+    /// models).
     virtual void evaluate_batch(int count, const Deformation* F, const Point* points, double* psi, Stress* P,
                                 Stiffness* dPdF, Projection projection) const
     {
