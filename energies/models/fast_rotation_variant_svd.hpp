@@ -320,6 +320,18 @@ inline Matrix3<double> to_matrix3(const Eigen::Matrix3d& A)
     return out;
 }
 
+/// F[k] in lane k for k < lanes ≤ W, the identity in the lanes beyond.
+template <int W>
+Matrix3<Lanes<W>> packed_in_lanes(const Eigen::Matrix3d* F, int lanes)
+{
+    Matrix3<Lanes<W>> packed = identity3<Lanes<W>>();
+    for (int k = 0; k < lanes; ++k)
+        for (int j = 0; j < 3; ++j)
+            for (int i = 0; i < 3; ++i)
+                packed(i, j).set_lane(k, F[k](i, j));
+    return packed;
+}
+
 inline Eigen::Vector3d to_eigen(const Vector3<double>& v) { return {v[0], v[1], v[2]}; }
 
 inline Eigen::Matrix3d to_eigen(const Matrix3<double>& A)
@@ -421,12 +433,7 @@ inline void fast_rotation_variant_svd(const Eigen::Matrix3d* F, int count, Rotat
     using T = Lanes<kSimdLanes>;
     for (int first = 0; first < count; first += kSimdLanes) {
         const int lanes = std::min(kSimdLanes, count - first);
-        Matrix3<T> packed = detail::identity3<T>();
-        for (int k = 0; k < lanes; ++k)
-            for (int j = 0; j < 3; ++j)
-                for (int i = 0; i < 3; ++i)
-                    packed(i, j).set_lane(k, F[first + k](i, j));
-        const detail::Svd3<T> svd = detail::rotation_variant_svd_of(packed);
+        const detail::Svd3<T> svd = detail::rotation_variant_svd_of(detail::packed_in_lanes<kSimdLanes>(F + first, lanes));
         for (int k = 0; k < lanes; ++k) {
             RotationVariantSvd<3>& result = out[first + k];
             for (int i = 0; i < 3; ++i) {

@@ -80,11 +80,7 @@ void evaluate_isotropic_batch(int count, const Model3d::Deformation* F, double* 
     using T = Lanes<kSimdLanes>;
     for (int first = 0; first < count; first += kSimdLanes) {
         const int lanes = std::min(kSimdLanes, count - first);
-        Matrix3<T> packed = detail::identity3<T>();
-        for (int k = 0; k < lanes; ++k)
-            for (int j = 0; j < 3; ++j)
-                for (int i = 0; i < 3; ++i)
-                    packed(i, j).set_lane(k, F[first + k](i, j));
+        const Matrix3<T> packed = detail::packed_in_lanes<kSimdLanes>(F + first, lanes);
         const detail::Svd3<T> svd = detail::rotation_variant_svd_of(packed);
         const IsotropicResponse<T> response = respond(packed, svd);
         for (int k = 0; k < lanes; ++k)

@@ -321,15 +321,12 @@ void MooneyRivlinMuscle::evaluate_batch(int count, const Deformation* F, const P
 void MooneyRivlinMuscle::evaluate_lanes(int lanes, const Deformation* F, const Point* points, double* psi,
                                         Stress* P, Stiffness* dPdF, Projection projection) const
 {
-    Matrix3<Wide> Fw = detail::identity3<Wide>();
+    const Matrix3<Wide> Fw = detail::packed_in_lanes<kSimdLanes>(F, lanes);
     Vector3<Wide> a0{{1.0, 0.0, 0.0}};
     Wide activation(0.0);
     for (int k = 0; k < lanes; ++k) {
-        for (int j = 0; j < 3; ++j) {
+        for (int j = 0; j < 3; ++j)
             a0[j].set_lane(k, points[k].fiber[j]);
-            for (int i = 0; i < 3; ++i)
-                Fw(i, j).set_lane(k, F[k](i, j));
-        }
         activation.set_lane(k, points[k].activation);
     }
     const double c = threshold_;

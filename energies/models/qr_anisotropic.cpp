@@ -244,7 +244,7 @@ void evaluate_volume_batch(const VolumeCoefficients& coefficients, int count, co
     const bool second_fiber = coefficients.ky > 0.0;
     for (int first = 0; first < count; first += kSimdLanes) {
         const int lanes = std::min(kSimdLanes, count - first);
-        Matrix3<L> Fl = detail::identity3<L>();
+        const Matrix3<L> Fl = detail::packed_in_lanes<kSimdLanes>(F + first, lanes);
         Vector3<L> a0{{1.0, 0.0, 0.0}}, b2{{0.0, 1.0, 0.0}};
         L g(1.0);
         for (int k = 0; k < lanes; ++k) {
@@ -257,8 +257,6 @@ void evaluate_volume_batch(const VolumeCoefficients& coefficients, int count, co
             for (int i = 0; i < 3; ++i) {
                 a0[i].set_lane(k, a[i]);
                 b2[i].set_lane(k, B(i, 1));
-                for (int j = 0; j < 3; ++j)
-                    Fl(i, j).set_lane(k, F[first + k](i, j));
             }
         }
         // cof F = ∂J/∂F, columns f₁ × f₂, f₂ × f₀, f₀ × f₁; J = det F = f₀ · (f₁ × f₂).
@@ -270,7 +268,7 @@ void evaluate_volume_batch(const VolumeCoefficients& coefficients, int count, co
         FiberLanes fibers[2] = {fiber_lanes(coefficients.kx, a0, Fl), fiber_lanes(coefficients.ky, b2, Fl)};
         const int fiber_count = second_fiber ? 2 : 1;
 
-        // ψ = α/2 (‖F‖² − 3) − α (J − 1) + β/2 (J − 1)² + Σ k/2 (r − 1)²
+        // ψ = α/2 (‖F‖² − 3) − α (J − 1) + β/2 (J − 1)² + Σ k/2 (r − 1)²  (seed 004 §3.1, §3.6)
         L energy = (0.5 * alpha) * (dot(Fl.col[0], Fl.col[0]) + dot(Fl.col[1], Fl.col[1]) + dot(Fl.col[2], Fl.col[2]) - 3.0) -
                    alpha * Jm1 + (0.5 * beta) * Jm1 * Jm1;
         for (int f = 0; f < fiber_count; ++f)
@@ -279,7 +277,7 @@ void evaluate_volume_batch(const VolumeCoefficients& coefficients, int count, co
             psi[first + k] = energy.lane(k);
         double* destinations[kSimdLanes];
         if (P) {
-            L stress[9];  // P = α F + c cof F + Σ k (r − 1) q aᵀ, column-major
+            L stress[9];  // P = α F + c cof F + Σ k (r − 1) q aᵀ (§3.2 in the form of §3.5), column-major
             for (int j = 0; j < 3; ++j)
                 for (int i = 0; i < 3; ++i) {
                     stress[i + 3 * j] = alpha * Fl(i, j) + c * cof(i, j);
@@ -293,7 +291,7 @@ void evaluate_volume_batch(const VolumeCoefficients& coefficients, int count, co
         if (!dPdF)
             continue;
 
-        L H[81];  // column-major, as ∂P/∂F
+        L H[81];  // column-major, as ∂P/∂F (§3.3–3.4, worked out per term as in plane_stiffness)
         // α 𝕀 + β vec(cof F) vec(cof F)ᵀ
         for (int column = 0; column < 9; ++column)
             for (int row = 0; row < 9; ++row)
