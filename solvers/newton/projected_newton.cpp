@@ -81,9 +81,10 @@ public:
         const bool projected = nlp.has_projected_hessian();
         double assembly_s = 0.0, factorization_s = 0.0, linear_solve_s = 0.0;
 
-        VectorXd x = nlp.starting_point(), gradient(n), step(n), trial(n), trial_gradient(n);
-        bool trust_exact = false;  ///< the last step's ρ ≥ ½
-        double kept_shift = 0.0;   ///< the shift the exact Hessian needed last time
+        VectorXd x = nlp.starting_point(), gradient(n), step(n), alternative(n), trial(n), trial_gradient(n);
+        bool trust_exact = false;    ///< the last step's ρ ≥ ½
+        bool near_solution = false;  ///< the last step's predicted decrease was below round-off of f
+        double kept_shift = 0.0;     ///< the shift the exact Hessian needed last time
         int projected_iterations = 0, factorizations = 0;
         double f = nlp.objective(x);
         result.function_evaluations = 1;
@@ -136,7 +137,6 @@ public:
             // converges linearly (rate 0.68), on the muscle spindle it takes
             // 61 iterations with full steps of 5e-5 m. The exact Hessian
             // alone overshoots far from the solution (the QR plate).
-            LinearStatus factorized = LinearStatus::failed;
             const bool exact = !projected || trust_exact;
             timed = Clock::now();
             if (exact)
@@ -148,36 +148,77 @@ public:
             const double diagonal_scale = std::max(1.0, hessian.matrix().diagonal().cwiseAbs().maxCoeff());
             if (!exact)
                 ++projected_iterations;
-            double shift = exact ? kept_shift : 0.0;
-            if (shift > 0.0)
-                hessian.shift_diagonal(shift);
-            timed = Clock::now();
-            factorized = linear->factorize(hessian.matrix());
-            factorization_s += seconds_since(timed);
-            ++factorizations;
-
-            // An H Cholesky rejects (indefinite, or a projection singular by
-            // round-off) is shifted by a growing multiple of I.
-            while (factorized == LinearStatus::not_positive_definite || factorized == LinearStatus::singular) {
-                const double next = shift == 0.0 ? 1e-8 * diagonal_scale : 10.0 * shift;
-                if (!std::isfinite(next) || next > 1e20)
-                    break;
-                hessian.shift_diagonal(next - shift);
-                shift = next;
-                timed = Clock::now();
-                factorized = linear->factorize(hessian.matrix());
-                factorization_s += seconds_since(timed);
+            // Factorizes the H in `hessian` plus shift·I and solves H d = −∇f; an
+            // H Cholesky rejects (indefinite, or a projection singular by
+            // round-off) is shifted by a growing multiple of I. The shift used
+            // goes back in `shift`; false with `failure` set when no shift works.
+            std::string failure;
+            auto solve_shifted = [&](double& shift, VectorXd& direction) {
+                if (shift > 0.0)
+                    hessian.shift_diagonal(shift);
+                auto timed_here = Clock::now();
+                LinearStatus factorized = linear->factorize(hessian.matrix());
+                factorization_s += seconds_since(timed_here);
                 ++factorizations;
-            }
-            if (factorized != LinearStatus::ok)
-                return finish(Status::numerical_error, "factorization failed: " + linear->last_message());
+                while (factorized == LinearStatus::not_positive_definite || factorized == LinearStatus::singular) {
+                    const double next = shift == 0.0 ? 1e-8 * diagonal_scale : 10.0 * shift;
+                    if (!std::isfinite(next) || next > 1e20)
+                        break;
+                    hessian.shift_diagonal(next - shift);
+                    shift = next;
+                    timed_here = Clock::now();
+                    factorized = linear->factorize(hessian.matrix());
+                    factorization_s += seconds_since(timed_here);
+                    ++factorizations;
+                }
+                if (factorized != LinearStatus::ok) {
+                    failure = "factorization failed: " + linear->last_message();
+                    return false;
+                }
+                timed_here = Clock::now();
+                const LinearStatus solved = linear->solve(-gradient, direction);
+                linear_solve_s += seconds_since(timed_here);
+                if (solved != LinearStatus::ok || !direction.allFinite()) {
+                    failure = "linear solve failed: " + linear->last_message();
+                    return false;
+                }
+                return true;
+            };
+            double shift = exact ? kept_shift : 0.0;
+            if (!solve_shifted(shift, step))
+                return finish(Status::numerical_error, failure);
             if (exact)
                 kept_shift = shift;
-            timed = Clock::now();
-            const LinearStatus solved = linear->solve(-gradient, step);
-            linear_solve_s += seconds_since(timed);
-            if (solved != LinearStatus::ok || !step.allFinite())
-                return finish(Status::numerical_error, "linear solve failed: " + linear->last_message());
+            // The value at the full step, when already known (below).
+            double f_full_step = kInfinity;
+            bool full_step_known = false;
+            // Near the solution (the last predicted decrease below round-off of f)
+            // an exact H that needs a shift is indefinite at what should be a
+            // minimum: e.g. a membrane in compression at an in-plane equilibrium,
+            // whose out-of-plane stiffness is negative while ∇f has no
+            // out-of-plane part. The shifted step then converges only linearly,
+            // at the rate shift/(λ + shift) of H's small positive eigenvalues λ
+            // (66 iterations on the codim sheet). The projected H's step does not
+            // see the negative directions; of the two full steps, the one with
+            // the lower f is taken.
+            if (exact && projected && shift > 0.0 && near_solution) {
+                timed = Clock::now();
+                nlp.projected_hessian_values(x, hessian_values);
+                hessian.fill(hessian_values);
+                assembly_s += seconds_since(timed);
+                double projected_shift = 0.0;
+                if (solve_shifted(projected_shift, alternative)) {
+                    const double f_exact = nlp.objective(x + step);
+                    const double f_projected = nlp.objective(x + alternative);
+                    result.function_evaluations += 2;
+                    full_step_known = true;
+                    f_full_step = f_exact;
+                    if (std::isfinite(f_projected) && !(f_exact <= f_projected)) {
+                        step.swap(alternative);
+                        f_full_step = f_projected;
+                    }
+                }
+            }
             double slope = gradient.dot(step);
             if (!(slope < 0.0)) {
                 step = -gradient;  // not a descent direction: steepest descent
@@ -187,12 +228,15 @@ public:
             // Armijo backtracking: f(x + α d) ≤ f(x) + c₁ α ∇fᵀd, f finite.
             double alpha = 1.0;
             double f_trial = kInfinity;
-            double f_full_step = kInfinity;
             int backtracks = 0;
             for (;; ++backtracks) {
                 trial = x + alpha * step;
-                f_trial = nlp.objective(trial);
-                ++result.function_evaluations;
+                if (backtracks == 0 && full_step_known) {
+                    f_trial = f_full_step;
+                } else {
+                    f_trial = nlp.objective(trial);
+                    ++result.function_evaluations;
+                }
                 if (backtracks == 0)
                     f_full_step = f_trial;
                 if (std::isfinite(f_trial) && f_trial <= f + settings.armijo * alpha * slope)
@@ -227,6 +271,7 @@ public:
                                : std::isfinite(f_full_step) ? (f - f_full_step) / predicted
                                                             : -kInfinity;
             trust_exact = rho >= 0.5;
+            near_solution = !measurable;
             if (!measurable)
                 kept_shift = 0.0;  // near the solution: exact Newton, quadratic convergence
             else if (exact && rho < 0.25)
