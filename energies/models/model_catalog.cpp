@@ -10,10 +10,33 @@
 namespace sinew {
 namespace {
 
-template <typename Model, typename Base>
-std::function<std::unique_ptr<Base>(const ParameterValues&)> maker()
+/// Registers Model as the entry's maker for its shape of F.
+template <typename Model>
+void add_maker(ModelEntry& entry)
 {
-    return [](const ParameterValues& values) -> std::unique_ptr<Base> { return std::make_unique<Model>(values); };
+    constexpr int Rows = Model::Deformation::RowsAtCompileTime, Cols = Model::Deformation::ColsAtCompileTime;
+    using Base = ConstitutiveModel<Rows, Cols>;
+    auto make = [](const ParameterValues& values) -> std::unique_ptr<Base> { return std::make_unique<Model>(values); };
+    if constexpr (Rows == 3 && Cols == 3)
+        entry.make_3x3 = make;
+    else if constexpr (Rows == 2 && Cols == 2)
+        entry.make_2x2 = make;
+    else
+        entry.make_3x2 = make;
+}
+
+/// The catalog entry of a model: the name and parameters of Model, and a
+/// maker for Model and for each class of OtherShapes (one per shape of F).
+template <typename Model, typename... OtherShapes>
+ModelEntry entry_of(const std::string& description)
+{
+    ModelEntry entry;
+    entry.name = Model::kName;
+    entry.description = description;
+    entry.parameters = Model::parameter_specs();
+    add_maker<Model>(entry);
+    (add_maker<OtherShapes>(entry), ...);
+    return entry;
 }
 
 template <int Rows, int Cols>
@@ -58,51 +81,14 @@ std::vector<std::string> ModelEntry::shapes() const
 
 const std::vector<ModelEntry>& model_catalog()
 {
-    static const std::vector<ModelEntry> catalog = [] {
-        std::vector<ModelEntry> models;
-        {
-            ModelEntry e;
-            e.name = MooneyRivlinMuscle::kName;
-            e.description = "Mooney-Rivlin solid with active and passive muscle fibers (seed 000 §4-5)";
-            e.parameters = MooneyRivlinMuscle::parameter_specs();
-            e.make_3x3 = maker<MooneyRivlinMuscle, Model3d>();
-            models.push_back(std::move(e));
-        }
-        {
-            ModelEntry e;
-            e.name = CodimensionalCorotated::kName;
-            e.description = "corotated membrane for triangles in 3D, F 3x2 (seed 002)";
-            e.parameters = CodimensionalCorotated::parameter_specs();
-            e.make_3x2 = maker<CodimensionalCorotated, MembraneModel>();
-            models.push_back(std::move(e));
-        }
-        {
-            ModelEntry e;
-            e.name = QrAnisotropic<3>::kName;
-            e.description = "QR-based anisotropic elasticity with damage, 2D or 3D by the size of F (seed 004 §3)";
-            e.parameters = QrAnisotropic<3>::parameter_specs();
-            e.make_3x3 = maker<QrAnisotropic<3>, Model3d>();
-            e.make_2x2 = maker<QrAnisotropic<2>, Model2d>();
-            models.push_back(std::move(e));
-        }
-        {
-            ModelEntry e;
-            e.name = StableNeoHookean::kName;
-            e.description = "stable Neo-Hookean (Smith, de Goes, Kim 2018)";
-            e.parameters = StableNeoHookean::parameter_specs();
-            e.make_3x3 = maker<StableNeoHookean, Model3d>();
-            models.push_back(std::move(e));
-        }
-        {
-            ModelEntry e;
-            e.name = FixedCorotated::kName;
-            e.description = "fixed corotated (Stomakhin et al. 2012)";
-            e.parameters = FixedCorotated::parameter_specs();
-            e.make_3x3 = maker<FixedCorotated, Model3d>();
-            models.push_back(std::move(e));
-        }
-        return models;
-    }();
+    static const std::vector<ModelEntry> catalog = {
+        entry_of<MooneyRivlinMuscle>("Mooney-Rivlin solid with active and passive muscle fibers (seed 000 §4-5)"),
+        entry_of<CodimensionalCorotated>("corotated membrane for triangles in 3D, F 3x2 (seed 002)"),
+        entry_of<QrAnisotropic<3>, QrAnisotropic<2>>(
+            "QR-based anisotropic elasticity with damage, 2D or 3D by the size of F (seed 004 §3)"),
+        entry_of<StableNeoHookean>("stable Neo-Hookean (Smith, de Goes, Kim 2018)"),
+        entry_of<FixedCorotated>("fixed corotated (Stomakhin et al. 2012)"),
+    };
     return catalog;
 }
 
