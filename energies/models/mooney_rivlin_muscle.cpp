@@ -230,6 +230,87 @@ Wide pair_mode_quadratic_form(const FrameBlocks& frame, const FrameFiber& fiber,
            (0.5 * s) * state.inverse_mu * state.inverse_mu * (fiber.fm[i] * fiber.fm[i] + fiber.fm[j] * fiber.fm[j]);
 }
 
+/// The SVD-frame blocks of the Mooney-Rivlin and volume terms of ∂P/∂F
+/// (§4.5.1), with w₁ = 2J_cc A, w₂ = 2J_cc² B and p − p_f as in P.
+FrameBlocks frame_blocks(const Vector3<Wide>& sigma, const LogVolume& volume, const Wide& w1, const Wide& w2,
+                         const Wide& I1, const Wide& trC2, const Wide& pressure, double K, double c)
+{
+    const Wide w12 = w1 + I1 * w2;
+    // §4.5.1.4: η from the second partials of ψ(tr C, tr C², L); γ = F_base η F_baseᵀ
+    // with F_base rows (σ_k, σ_k³, ℓ'_k). η₁₃ is −(4/3)AJ_cc − (8/3)BJ_cc² tr C
+    // (the summary's first line has 8/9: see docs).
+    const Wide eta02 = -2.0 / 3.0 * w1 - 4.0 / 3.0 * w2 * I1, eta12 = 4.0 / 3.0 * w2;
+    const Wide eta22 = K + 2.0 / 9.0 * w1 * I1 + 4.0 / 9.0 * w2 * (I1 * I1 - trC2);
+    const Matrix3<Wide> eta{{{{2.0 * w2, Wide(0.0), eta02}}, {{Wide(0.0), Wide(0.0), eta12}}, {{eta02, eta12, eta22}}}};
+    Vector3<Wide> base[3];  // the rows of F_base
+    for (int k = 0; k < 3; ++k)
+        base[k] = {{sigma[k], sigma[k] * sigma[k] * sigma[k], volume.slope[k]}};
+    FrameBlocks frame;
+    for (int l = 0; l < 3; ++l) {
+        const Vector3<Wide> eta_base = eta * base[l];
+        for (int k = 0; k < 3; ++k)
+            frame.A(k, l) = dot(base[k], eta_base);
+    }
+    // A = diag(α_kk + β_kk) + γ: α_kk = w₁₂ − 2w₂σ_k², β_kk = (p − p_f) ℓ''_k − w₂σ_k²
+    // (−(p − p_f)/σ_k² above the threshold).
+    for (int k = 0; k < 3; ++k)
+        frame.A(k, k) += w12 - 3.0 * w2 * sigma[k] * sigma[k] + pressure * volume.curvature[k];
+    // B_ij: α_ij = w₁₂ − w₂(σ_i² + σ_j²) + (p − p_f) a_ij,
+    //       β_ij = −w₂σ_iσ_j + (p − p_f) b_ij (−(p − p_f)/(σ_iσ_j) above the threshold).
+    for (int m = 0; m < 3; ++m) {
+        const int i = kPairs[m][0], j = kPairs[m][1];
+        Wide a, b;
+        log_volume_pair(volume, sigma, c, i, j, a, b);
+        frame.alpha[m] = w12 - w2 * (sigma[i] * sigma[i] + sigma[j] * sigma[j]) + pressure * a;
+        frame.beta[m] = -w2 * sigma[i] * sigma[j] + pressure * b;
+    }
+    return frame;
+}
+
+/// §5.6 on the SVD-frame blocks: the 3×3 block less its negative part (where
+/// Sylvester's criterion does not prove it positive definite), each B_ij's
+/// eigenvalues α ± β clamped at zero; and where something changed.
+struct ClampedFrame {
+    FrameBlocks projected;
+    WideMask block_clamped;        ///< the 3×3 block had a negative eigenvalue
+    Vector3<Wide> block_negative;  ///< then a unit eigenvector of one
+    WideMask plus_negative[3];     ///< α + β < 0 for pair m
+    WideMask minus_negative[3];    ///< α − β < 0 for pair m
+    WideMask clamped;              ///< any of these
+};
+
+ClampedFrame clamp_frame(const FrameBlocks& frame)
+{
+    ClampedFrame out;
+    out.projected = frame;
+    const WideMask block_definite = detail::positive_definite_3x3(frame.A);
+    out.block_clamped = !block_definite;
+    out.block_negative = {{1.0, 0.0, 0.0}};
+    if (any(out.block_clamped)) {
+        const detail::NegativePart<Wide> negative = detail::negative_part(frame.A);
+        WideMask changed = negative.part(0, 0) < 0.0 || negative.part(0, 0) > 0.0;
+        for (int j = 0; j < 3; ++j)
+            for (int i = 0; i < 3; ++i) {
+                changed = changed || negative.part(i, j) < 0.0 || negative.part(i, j) > 0.0;
+                out.projected.A(i, j) = select(block_definite, frame.A(i, j), frame.A(i, j) - negative.part(i, j));
+            }
+        out.block_clamped = out.block_clamped && changed;
+        out.block_negative = negative.direction;
+    }
+    out.clamped = out.block_clamped;
+    for (int m = 0; m < 3; ++m) {
+        const Wide plus = frame.alpha[m] + frame.beta[m], minus = frame.alpha[m] - frame.beta[m];
+        out.plus_negative[m] = plus < 0.0;
+        out.minus_negative[m] = minus < 0.0;
+        const WideMask pair_clamped = out.plus_negative[m] || out.minus_negative[m];
+        const Wide plus_clamped = max(plus, Wide(0.0)), minus_clamped = max(minus, Wide(0.0));
+        out.projected.alpha[m] = select(pair_clamped, 0.5 * (plus_clamped + minus_clamped), frame.alpha[m]);
+        out.projected.beta[m] = select(pair_clamped, 0.5 * (plus_clamped - minus_clamped), frame.beta[m]);
+        out.clamped = out.clamped || pair_clamped;
+    }
+    return out;
+}
+
 ParameterSpec number(const std::string& name, double default_value, const std::string& unit,
                      const std::string& description, double lower, double upper, bool lower_exclusive)
 {
@@ -420,34 +501,7 @@ void MooneyRivlinMuscle::evaluate_lanes(int lanes, const Deformation* F, const P
     if (!dPdF)
         return;
 
-    // §4.5.1.4: η from the second partials of ψ(tr C, tr C², L); γ = F_base η F_baseᵀ
-    // with F_base rows (σ_k, σ_k³, ℓ'_k). η₁₃ is −(4/3)AJ_cc − (8/3)BJ_cc² tr C
-    // (the summary's first line has 8/9: see docs).
-    const Wide eta02 = -2.0 / 3.0 * w1 - 4.0 / 3.0 * w2 * I1, eta12 = 4.0 / 3.0 * w2;
-    const Wide eta22 = K_ + 2.0 / 9.0 * w1 * I1 + 4.0 / 9.0 * w2 * (I1 * I1 - trC2);
-    const Matrix3<Wide> eta{{{{2.0 * w2, Wide(0.0), eta02}}, {{Wide(0.0), Wide(0.0), eta12}}, {{eta02, eta12, eta22}}}};
-    Vector3<Wide> base[3];  // the rows of F_base
-    for (int k = 0; k < 3; ++k)
-        base[k] = {{sigma[k], sigma[k] * sigma[k] * sigma[k], volume.slope[k]}};
-    FrameBlocks frame;
-    for (int l = 0; l < 3; ++l) {
-        const Vector3<Wide> eta_base = eta * base[l];
-        for (int k = 0; k < 3; ++k)
-            frame.A(k, l) = dot(base[k], eta_base);
-    }
-    // A = diag(α_kk + β_kk) + γ: α_kk = w₁₂ − 2w₂σ_k², β_kk = (p − p_f) ℓ''_k − w₂σ_k²
-    // (−(p − p_f)/σ_k² above the threshold).
-    for (int k = 0; k < 3; ++k)
-        frame.A(k, k) += w12 - 3.0 * w2 * sigma[k] * sigma[k] + pressure * volume.curvature[k];
-    // B_ij: α_ij = w₁₂ − w₂(σ_i² + σ_j²) + (p − p_f) a_ij,
-    //       β_ij = −w₂σ_iσ_j + (p − p_f) b_ij (−(p − p_f)/(σ_iσ_j) above the threshold).
-    for (int m = 0; m < 3; ++m) {
-        const int i = kPairs[m][0], j = kPairs[m][1];
-        Wide a, b;
-        log_volume_pair(volume, sigma, c, i, j, a, b);
-        frame.alpha[m] = w12 - w2 * (sigma[i] * sigma[i] + sigma[j] * sigma[j]) + pressure * a;
-        frame.beta[m] = -w2 * sigma[i] * sigma[j] + pressure * b;
-    }
+    const FrameBlocks frame = frame_blocks(sigma, volume, w1, w2, I1, trC2, pressure, K_, c);
 
     // §4.5.2, eq. 45 rotated back with U F̂ f_m = F a₀ and V f_m = a₀: the fiber's
     // ∂²Φ/∂F² in vec(F) with t = f'λ² + fλ and s = fλ (0 without fiber force).
@@ -483,36 +537,9 @@ void MooneyRivlinMuscle::evaluate_lanes(int lanes, const Deformation* F, const P
         // f' (and f) at zero. Without fibers ∂P/∂F is block diagonal in the SVD frame
         // and this is its spectral clamp. The fiber terms are not block diagonal: the
         // sum can be PSD while a block or f' is not, and then the exact ∂P/∂F is kept.
-        FrameBlocks projected = frame;
-        const WideMask block_definite = detail::positive_definite_3x3(frame.A);
-        WideMask block_clamped = !block_definite;
-        Vector3<Wide> block_negative{{1.0, 0.0, 0.0}};  // a unit eigenvector of a negative eigenvalue
-        if (any(block_clamped)) {
-            const detail::NegativePart<Wide> negative = detail::negative_part(frame.A);
-            WideMask changed = negative.part(0, 0) < 0.0 || negative.part(0, 0) > 0.0;
-            for (int j = 0; j < 3; ++j)
-                for (int i = 0; i < 3; ++i) {
-                    changed = changed || negative.part(i, j) < 0.0 || negative.part(i, j) > 0.0;
-                    projected.A(i, j) = select(block_definite, frame.A(i, j), frame.A(i, j) - negative.part(i, j));
-                }
-            block_clamped = block_clamped && changed;
-            block_negative = negative.direction;
-        }
-        // The eigenvalues α ± β of each B_ij clamped at zero.
-        WideMask plus_negative[3], minus_negative[3];
-        WideMask clamped = block_clamped;
-        for (int m = 0; m < 3; ++m) {
-            const Wide plus = frame.alpha[m] + frame.beta[m], minus = frame.alpha[m] - frame.beta[m];
-            plus_negative[m] = plus < 0.0;
-            minus_negative[m] = minus < 0.0;
-            const WideMask pair_clamped = plus_negative[m] || minus_negative[m];
-            const Wide plus_clamped = max(plus, Wide(0.0)), minus_clamped = max(minus, Wide(0.0));
-            projected.alpha[m] = select(pair_clamped, 0.5 * (plus_clamped + minus_clamped), frame.alpha[m]);
-            projected.beta[m] = select(pair_clamped, 0.5 * (plus_clamped - minus_clamped), frame.beta[m]);
-            clamped = clamped || pair_clamped;
-        }
+        const ClampedFrame clamp = clamp_frame(frame);
         const WideMask fiber_clamped = deviatoric ? fiber_force : fiber_force && (f < 0.0 || df < 0.0);
-        clamped = clamped || fiber_clamped;
+        const WideMask clamped = clamp.clamped || fiber_clamped;
         // Where something is clamped and the fiber couples the blocks, the exact
         // ∂P/∂F is kept if it is PSD: proven indefinite by zᵀKz < 0 along a direction
         // the clamp changes (the block's negative direction, the negative modes
@@ -531,12 +558,12 @@ void MooneyRivlinMuscle::evaluate_lanes(int lanes, const Deformation* F, const P
             Matrix3<Wide> Z;
             for (int j = 0; j < 3; ++j)
                 for (int i = 0; i < 3; ++i)
-                    Z(i, j) = i == j ? block_negative[i] : Wide(0.0);
-            WideMask indefinite = block_clamped && negative_along(Z);
+                    Z(i, j) = i == j ? clamp.block_negative[i] : Wide(0.0);
+            WideMask indefinite = clamp.block_clamped && negative_along(Z);
             for (int m = 0; m < 3; ++m)
                 for (const double sign : {1.0, -1.0}) {
                     const Wide form = pair_mode_quadratic_form(frame, frame_fiber, fiber, m, sign, t, s);
-                    indefinite = indefinite || ((sign > 0.0 ? plus_negative[m] : minus_negative[m]) && form < 0.0);
+                    indefinite = indefinite || ((sign > 0.0 ? clamp.plus_negative[m] : clamp.minus_negative[m]) && form < 0.0);
                 }
             for (int j = 0; j < 3; ++j)
                 for (int i = 0; i < 3; ++i)
@@ -558,7 +585,7 @@ void MooneyRivlinMuscle::evaluate_lanes(int lanes, const Deformation* F, const P
         const Wide f_plus = max(f, Wide(0.0)), df_plus = max(df, Wide(0.0));
         const Wide t_plus = select(fiber_force, (df_plus * lambda + f_plus) * lambda, Wide(0.0));
         const Wide s_plus = select(fiber_force, f_plus * lambda, Wide(0.0));
-        assemble(select(exact, frame, projected), select(exact, t, t_plus), select(exact, s, s_plus), K);
+        assemble(select(exact, frame, clamp.projected), select(exact, t, t_plus), select(exact, s, s_plus), K);
         if (deviatoric && fiber_terms)
             remove_negative_pair(fiber, t_plus, s_plus, !exact && fiber_force, K);
     }
