@@ -14,9 +14,9 @@
 // method is written once for a scalar type T (lanes.hpp): T = Lanes<W> for
 // the SVDs, W matrices side by side in SIMD registers (one SVD is a single
 // chain of dependent square roots and divisions; the batch runs W such
-// chains in the instructions of one), T = double for the isolated eigenpair
-// that the symmetric eigen-decomposition and the negative part take one
-// matrix at a time.
+// chains in the instructions of one), also for the isolated eigenpair inside
+// the models' batched PSD clamps; T = double for the Eigen-typed single
+// calls (symmetric_eigen_3x3, negative_part_3x3).
 #include "sinew/energies/models/lanes.hpp"
 #include "sinew/energies/models/rotation_variant_svd.hpp"
 
