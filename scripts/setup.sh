@@ -14,6 +14,7 @@ packages=(
   nlohmann-json3-dev       # JSON
   libcli11-dev             # command line parsing
   libtet1.5-dev            # TetGen 1.5: tetrahedralization of closed surfaces
+  python3                  # an independent XML parser for the VTU writer's test
 )
 
 missing=()

@@ -66,24 +66,29 @@ TEST_CASE("sinew energy prints psi, P and dPdF[i][j][k][l] = dP_ij/dF_kl")
     REQUIRE(at_F["dPdF"][0][0][0].size() == static_cast<size_t>(c.cols));
     CHECK(std::isfinite(at_F["psi"].get<double>()));
 
-    // Column l of row k of F, moved by ±h: (P⁺ − P⁻)/2h against dPdF[·][·][k][l].
-    const int k = c.rows - 1, l = c.cols - 1;
+    // Every entry (k, l) of F, moved by ±h: (P⁺ − P⁻)/2h against dPdF[·][·][k][l].
+    // F is given row by row, so entry (k, l) is text position k·cols + l; a
+    // mix-up of k and l (or of row- and column-major order) shows at every
+    // off-diagonal entry.
     const double h = 1e-6;
-    auto moved = F;
-    moved[static_cast<size_t>(k * c.cols + l)] += h;
-    const auto plus = energy(common + "'" + join(moved) + "'");
-    moved[static_cast<size_t>(k * c.cols + l)] -= 2 * h;
-    const auto minus = energy(common + "'" + join(moved) + "'");
-    double scale = 1.0;
-    for (int i = 0; i < c.rows; ++i)
-        for (int j = 0; j < c.cols; ++j)
-            scale = std::max(scale, std::abs(at_F["dPdF"][i][j][k][l].get<double>()));
-    for (int i = 0; i < c.rows; ++i)
-        for (int j = 0; j < c.cols; ++j) {
-            const double difference =
-                (plus["P"][i][j].get<double>() - minus["P"][i][j].get<double>()) / (2 * h);
-            CAPTURE(i, j, k, l, difference, at_F["dPdF"][i][j][k][l].get<double>());
-            CHECK(std::abs(difference - at_F["dPdF"][i][j][k][l].get<double>()) <= 1e-5 * scale);
+    for (int k = 0; k < c.rows; ++k)
+        for (int l = 0; l < c.cols; ++l) {
+            auto moved = F;
+            moved[static_cast<size_t>(k * c.cols + l)] += h;
+            const auto plus = energy(common + "'" + join(moved) + "'");
+            moved[static_cast<size_t>(k * c.cols + l)] -= 2 * h;
+            const auto minus = energy(common + "'" + join(moved) + "'");
+            double scale = 1.0;
+            for (int i = 0; i < c.rows; ++i)
+                for (int j = 0; j < c.cols; ++j)
+                    scale = std::max(scale, std::abs(at_F["dPdF"][i][j][k][l].get<double>()));
+            for (int i = 0; i < c.rows; ++i)
+                for (int j = 0; j < c.cols; ++j) {
+                    const double difference =
+                        (plus["P"][i][j].get<double>() - minus["P"][i][j].get<double>()) / (2 * h);
+                    CAPTURE(i, j, k, l, difference, at_F["dPdF"][i][j][k][l].get<double>());
+                    CHECK(std::abs(difference - at_F["dPdF"][i][j][k][l].get<double>()) <= 1e-5 * scale);
+                }
         }
 }
 

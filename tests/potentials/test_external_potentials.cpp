@@ -171,7 +171,7 @@ TEST_CASE("obstacle penalty (seed 000 §5.7): value, gradient, Hessian and proje
     check_obstacle<2>(SphereObstacle{Eigen::Vector2d(0.2, 0.1), 0.8}, rng);
 }
 
-TEST_CASE("obstacle penalty acts only on the listed nodes; at a sphere's center the force vanishes",
+TEST_CASE("obstacle penalty acts only on the listed nodes, and at a sphere's center the force vanishes",
           "[potentials][obstacles]")
 {
     ObstaclePenaltyPotential floor(2, 3, PlaneObstacle{Eigen::Vector2d(0.0, 2.0), 0.0}, 10.0, {1});

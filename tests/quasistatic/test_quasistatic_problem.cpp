@@ -173,7 +173,7 @@ TEST_CASE("quasistatic NLP: elimination and equality constraints give the same o
     CHECK(matched == eliminated.hessian_pattern().nonzeros());
 }
 
-TEST_CASE("quasistatic NLP: projected Hessian offered and PSD; exact Hessian indefinite under the ball",
+TEST_CASE("quasistatic NLP: projected Hessian offered and PSD, exact Hessian indefinite under the ball",
           "[quasistatic][projection]")
 {
     Bar bar;
@@ -203,7 +203,7 @@ TEST_CASE("quasistatic NLP: projected Hessian offered and PSD; exact Hessian ind
     CHECK(smallest_eigenvalue(exact) < 0.0);
 }
 
-TEST_CASE("quasistatic NLP: a face turned by 90° starts from the rest state of the free nodes; steps of 30° solve",
+TEST_CASE("quasistatic NLP: a face turned by 90° starts from the rest state of the free nodes, and steps of 30° solve",
           "[quasistatic][start]")
 {
     const int nz = 3;
