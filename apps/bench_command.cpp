@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <memory>
 
 namespace sinew::cli {
@@ -152,13 +153,15 @@ void add_bench_command(CLI::App& app, int& exit_code)
     command->add_option("--evaluations", flags->kernel_evaluations,
                         "suite kernels: random deformation gradients per model")
         ->capture_default_str()
-        ->check(CLI::PositiveNumber);
+        ->check(CLI::Range(1, std::numeric_limits<int>::max()));
     add_solver_flags(*command, flags->solver_flags);
 
     command->callback([flags, &exit_code] {
         const SolverOptions options = to_solver_options(flags->solver_flags);
+        require_positive_finite(flags->reference.objective, "--optimum-tol");
+        require_positive_finite(flags->reference.feasibility, "--feasibility-tol");
         if (!flags->json.empty())
-            write_text_file(flags->json, "");  // fail on a bad path before the solve, not after
+            check_writable(flags->json);  // fail on a bad path before the solve, not after
         const auto suites = builtin_suites();
         const bool kernels_only = flags->suite == kKernelSuite;
         if (flags->suite != "all" && !kernels_only &&

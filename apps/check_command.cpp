@@ -1,3 +1,4 @@
+#include "cli_options.hpp"
 #include "commands.hpp"
 
 #include "sinew/problems/builtin_problems.hpp"
@@ -33,6 +34,9 @@ void add_check_command(CLI::App& app, int& exit_code)
         ->capture_default_str();
 
     command->callback([flags, &exit_code] {
+        require_positive_finite(flags->tolerance, "--tol");
+        require_non_negative_finite(flags->perturbation, "--perturb");
+        require_positive_finite(flags->step, "--step");
         const BuiltinProblem& problem = find_builtin_problem(flags->problem);
         const std::unique_ptr<Nlp> nlp = problem.make();
         Eigen::VectorXd x = nlp->starting_point();

@@ -1,6 +1,9 @@
 #include "cli_options.hpp"
 
+#include "sinew/core/format_number.hpp"
 #include "sinew/core/input_error.hpp"
+
+#include <cmath>
 
 namespace sinew::cli {
 
@@ -25,6 +28,18 @@ std::pair<std::string, std::string> split_key_value(const std::string& text, con
     if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
         throw InputError("malformed " + flag + " '" + text + "': expected key=value");
     return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+void require_positive_finite(double value, const std::string& flag)
+{
+    if (!(value > 0.0 && std::isfinite(value)))
+        throw InputError(flag + " = " + format_number(value) + " is invalid; it must be a positive finite number");
+}
+
+void require_non_negative_finite(double value, const std::string& flag)
+{
+    if (!(value >= 0.0 && std::isfinite(value)))
+        throw InputError(flag + " = " + format_number(value) + " is invalid; it must be a finite number >= 0");
 }
 
 SolverOptions to_solver_options(const SolverFlags& flags)

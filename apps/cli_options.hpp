@@ -22,6 +22,11 @@ void add_solver_flags(CLI::App& command, SolverFlags& flags);
 /// side is empty or there is no '='.
 std::pair<std::string, std::string> split_key_value(const std::string& text, const std::string& flag);
 
+/// InputError "<flag> = <value> is invalid; …" unless value > 0 (resp. ≥ 0)
+/// and finite: for the flags CLI11 parses as doubles, which take "nan".
+void require_positive_finite(double value, const std::string& flag);
+void require_non_negative_finite(double value, const std::string& flag);
+
 /// Options with the key=value texts parsed; InputError for a malformed one.
 SolverOptions to_solver_options(const SolverFlags& flags);
 

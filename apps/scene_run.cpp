@@ -64,12 +64,14 @@ nlohmann::json step_summary(int step, double load_factor, const Result& result)
 
 SceneRunOutcome run_scene(Scene& scene, const SceneRunSettings& settings)
 {
+    // Every input is checked before the output folder is made.
+    check_solve(*scene.problem, settings.solver, settings.options);
     std::error_code error;
     std::filesystem::create_directories(settings.folder, error);
     if (error)
         throw InputError("cannot create output folder '" + settings.folder + "': " + error.message());
     const std::string folder = settings.folder + "/";
-    write_text_file(folder + "result.json", "");  // fail on an unwritable folder before the solve
+    check_writable(folder + "result.json");  // fail on an unwritable folder before the solve
 
     QuasistaticProblem& problem = *scene.problem;
     nlohmann::json steps = nlohmann::json::array();

@@ -11,6 +11,7 @@
 #include "sinew/solvers/solver.hpp"
 
 #include <filesystem>
+#include <limits>
 #include <memory>
 
 namespace sinew::cli {
@@ -19,6 +20,19 @@ namespace {
 bool is_scene_file(const std::string& problem)
 {
     return std::filesystem::path(problem).extension() == ".json";
+}
+
+/// The scene's own solver name and options, checked alone before they are
+/// merged with the command line's, so that an error in them names the scene
+/// file and its "solver" key.
+void check_scene_solver(const Scene& scene, SolverOptions options)
+{
+    options.backend = scene.solver.options;
+    try {
+        find_solver(scene.solver.name).check_options(options);
+    } catch (const InputError& e) {
+        throw InputError((scene.solver.source.empty() ? scene.name : scene.solver.source) + ": " + e.what());
+    }
 }
 
 } // namespace
@@ -47,24 +61,25 @@ void add_solve_command(CLI::App& app, int& exit_code)
                         "scenes: folder for result.json and VTU files (default: the scene's output.folder, else "
                         "<scene name>-output for a scene file; a built-in scene writes only with --output)");
     command->add_option("--load-steps", flags->load_steps, "scenes: number of equal load steps (default: the scene's)")
-        ->check(CLI::PositiveNumber);
+        ->check(CLI::Range(1, std::numeric_limits<int>::max()));
     command->add_option("--verbosity", flags->verbosity, "0 silent, 1 iteration table, 2 backend output")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(CLI::Range(0, kMaxVerbosity));
     add_solver_flags(*command, flags->solver_flags);
 
     command->callback([flags, command, &exit_code] {
         SolverOptions options = to_solver_options(flags->solver_flags);
         options.verbosity = flags->verbosity;
         if (!flags->json.empty())
-            write_text_file(flags->json, "");  // fail on a bad path before the solve, not after
+            check_writable(flags->json);  // fail on a bad path before the solve, not after
         const bool scene_file = is_scene_file(flags->problem);
         const BuiltinProblem* builtin = scene_file ? nullptr : &find_builtin_problem(flags->problem);
         const bool scene_output = scene_file || (!builtin->scene.empty() && !flags->output.empty());
         if (!scene_output) {
             if (command->count("--load-steps") > 0)
                 throw InputError("--load-steps applies to scenes only ('" + flags->problem + "' is not one)");
-            find_solver(flags->solver);
             const std::unique_ptr<Nlp> nlp = builtin->make();
+            check_solve(*nlp, flags->solver, options);
             const Result result = solve(*nlp, flags->solver, options);
             if (!flags->json.empty())
                 write_text_file(flags->json, to_json(result).dump(2) + "\n");
@@ -76,7 +91,6 @@ void add_solve_command(CLI::App& app, int& exit_code)
         // Precedence: command line, then the scene's settings, then defaults.
         SceneRunSettings settings;
         settings.solver = command->count("--solver") > 0 ? flags->solver : scene.solver.name;
-        find_solver(settings.solver);
         if (scene.solver.tolerance && command->count("--tol") == 0)
             options.tolerance = *scene.solver.tolerance;
         if (scene.solver.max_iterations && command->count("--max-iter") == 0)
@@ -84,6 +98,8 @@ void add_solve_command(CLI::App& app, int& exit_code)
         if (settings.solver == scene.solver.name)
             for (const auto& [key, value] : scene.solver.options)
                 options.backend.emplace(key, value);  // --option key=value wins
+        if (settings.solver == scene.solver.name)
+            check_scene_solver(scene, options);
         settings.options = options;
         settings.load_steps = command->count("--load-steps") > 0 ? flags->load_steps : scene.load_steps;
         settings.folder = !flags->output.empty()          ? flags->output

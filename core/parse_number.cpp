@@ -17,7 +17,9 @@ double parse_finite_double(const std::string& text, const std::string& what)
     const double value = std::strtod(begin, &end);
     if (text.empty() || end != begin + text.size())
         throw InputError(what + ": '" + text + "' is not a number");
-    if (!std::isfinite(value) || errno == ERANGE)
+    // ERANGE also flags a result that underflowed to a subnormal or to zero:
+    // that is the nearest double and is accepted; only an overflow is not.
+    if (!std::isfinite(value))
         throw InputError(what + ": '" + text + "' is not a finite number");
     return value;
 }

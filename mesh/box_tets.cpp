@@ -1,37 +1,15 @@
 #include "sinew/mesh/box_tets.hpp"
 
-#include "sinew/core/input_error.hpp"
+#include "sinew/mesh/grid_extent.hpp"
 
 #include <array>
-#include <cmath>
-#include <sstream>
 #include <utility>
 
 namespace sinew {
-namespace {
-
-void check_box(const Eigen::Vector3d& lower, const Eigen::Vector3d& upper, const std::array<int, 3>& cells)
-{
-    for (int k = 0; k < 3; ++k) {
-        const char axis = "xyz"[k];
-        if (cells[k] < 1)
-            throw InputError(std::string("box_tets: n") + axis + " = " + std::to_string(cells[k]) +
-                             ", expected at least 1 cell");
-        if (!std::isfinite(lower[k]) || !std::isfinite(upper[k]) || !(lower[k] < upper[k])) {
-            std::ostringstream message;
-            message << "box_tets: lower " << axis << " = " << lower[k] << " must be below upper " << axis << " = "
-                    << upper[k];
-            throw InputError(message.str());
-        }
-    }
-}
-
-} // namespace
 
 Mesh box_tets(const Eigen::Vector3d& lower, const Eigen::Vector3d& upper, int nx, int ny, int nz)
 {
-    const std::array<int, 3> cells{nx, ny, nz};
-    check_box(lower, upper, cells);
+    check_grid_extent("box_tets", lower, upper, Eigen::Vector3i(nx, ny, nz));
     const auto node_index = [&](int i, int j, int k) { return i + (nx + 1) * (j + (ny + 1) * k); };
 
     Mesh mesh;

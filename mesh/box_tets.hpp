@@ -12,7 +12,9 @@ namespace sinew {
 /// the mesh is conforming. (nx+1)(ny+1)(nz+1) nodes numbered
 /// i + (nx+1)(j + (ny+1)k), 6·nx·ny·nz tets, all positively oriented, each of
 /// volume |box| / (6 nx ny nz), all in kDefaultGroupName, no fibers.
-/// Throws InputError when a cell count is below 1 or lower < upper fails.
+/// Throws InputError when the extent or the cell counts fail check_grid_extent
+/// (grid_extent.hpp): a count below 1, lower < upper false, a bound beyond
+/// ±kMaxCoordinate, or cells too thin to resolve.
 Mesh box_tets(const Eigen::Vector3d& lower, const Eigen::Vector3d& upper, int nx, int ny, int nz);
 
 } // namespace sinew

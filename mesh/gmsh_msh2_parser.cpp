@@ -43,10 +43,11 @@ void read_elements(TextLineReader& in, Content& content)
             in.fail("element type " + std::to_string(type) + " (" + type_name(type) +
                     ") is not supported: sinew reads 4-node tetrahedra and 3-node triangles");
         const int tags = in.integer(2, "number of tags");
-        if (tags < 0)
-            in.fail("number of tags is " + std::to_string(tags));
+        if (tags < 0 || static_cast<std::size_t>(tags) > in.token_count())
+            in.fail("number of tags is " + std::to_string(tags) + ", the line has " +
+                    std::to_string(in.token_count()) + " values");
         const int corners = kept_type_nodes(type);
-        in.expect_token_count(3 + tags + corners, "element of type " + std::to_string(type) + " with " +
+        in.expect_token_count(3 + static_cast<std::size_t>(tags) + corners, "element of type " + std::to_string(type) + " with " +
                                                       std::to_string(tags) + " tags");
         Element element;
         element.type = type;

@@ -59,6 +59,8 @@ void read_nodes(TextLineReader& in, Content& content)
         const int count = in.integer(3, "number of nodes in block");
         if (parametric != 0 && parametric != 1)
             in.fail("parametric flag is " + std::to_string(parametric) + ", expected 0 or 1");
+        if (entity_dimension < 0 || entity_dimension > 3)
+            in.fail("entity dimension is " + std::to_string(entity_dimension) + ", expected 0 to 3");
         if (count < 0)
             in.fail("number of nodes in block is " + std::to_string(count));
         const std::size_t first = content.nodes.size();
@@ -113,6 +115,8 @@ void read_elements(TextLineReader& in, const EntityPhysicals& physicals, Content
         const int entity = in.integer(1, "entity tag");
         const int type = in.integer(2, "element type");
         const int count = in.integer(3, "number of elements in block");
+        if (entity_dimension < 0 || entity_dimension > 3)
+            in.fail("entity dimension is " + std::to_string(entity_dimension) + ", expected 0 to 3");
         if (count < 0)
             in.fail("number of elements in block is " + std::to_string(count));
         const TypeUse use = type_use(type);

@@ -35,8 +35,14 @@ void check_shapes(const Mesh& mesh, const MeshSource& source)
 void check_coordinates(const Mesh& mesh, const MeshSource& source)
 {
     for (int i = 0; i < mesh.num_nodes(); ++i)
-        if (!mesh.nodes.col(i).allFinite())
-            throw InputError(source.node_location(i) + ": coordinate is not a finite number");
+        for (int k = 0; k < mesh.nodes.rows(); ++k) {
+            const double x = mesh.nodes(k, i);
+            if (!std::isfinite(x))
+                throw InputError(source.node_location(i) + ": coordinate is not a finite number");
+            if (std::abs(x) > kMaxCoordinate)
+                throw InputError(source.node_location(i) + ": coordinate " + format_number(x) +
+                                 " is beyond the limit of ±" + format_number(kMaxCoordinate));
+        }
 }
 
 void check_groups(const Mesh& mesh, const MeshSource& source)

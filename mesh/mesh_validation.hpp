@@ -9,6 +9,13 @@ namespace sinew {
 /// An element is degenerate when its measure is at most this fraction of
 /// ℓ^d (ℓ its longest edge, d its dimension): zero up to rounding.
 inline constexpr double kDegenerateMeasureRatio = 1e-12;
+/// Every rest coordinate lies in [−kMaxCoordinate, kMaxCoordinate], so that
+/// every derived geometric quantity (squared lengths, volumes ℓ³, sums of
+/// coordinates over a mesh) is a finite double.
+inline constexpr double kMaxCoordinate = 1e100;
+/// Generators and TetGen refuse to make more elements than this: a typo in a
+/// cell count or a max_volume should be an error, not an out-of-memory crash.
+inline constexpr double kMaxGeneratedElements = 2e7;
 /// A fiber column a is unit when |‖a‖ − 1| ≤ this.
 inline constexpr double kFiberUnitTolerance = 1e-6;
 
@@ -16,7 +23,7 @@ inline constexpr double kFiberUnitTolerance = 1e-6;
 /// line naming the source, the node or element (0-based) and, when `source`
 /// knows it, the file line. In order:
 ///  - nodes has space_dimension rows, elements nodes_per_element rows;
-///  - every coordinate is finite;
+///  - every coordinate is finite and within ±kMaxCoordinate;
 ///  - element_groups has one entry per element, each an index into group_names;
 ///  - every element's node indices are in range and distinct;
 ///  - tets have signed volume V = det[x1 − x0, x2 − x0, x3 − x0]/6 > 0 and

@@ -1,30 +1,9 @@
 #include "sinew/mesh/rectangle_triangles.hpp"
 
-#include "sinew/core/input_error.hpp"
-
-#include <cmath>
-#include <sstream>
+#include "sinew/mesh/grid_extent.hpp"
 
 namespace sinew {
 namespace {
-
-void check_rectangle(const std::string& generator, const Eigen::Vector2d& lower, const Eigen::Vector2d& upper,
-                     int nx, int ny)
-{
-    const int cells[2] = {nx, ny};
-    for (int k = 0; k < 2; ++k) {
-        const char axis = "xy"[k];
-        if (cells[k] < 1)
-            throw InputError(generator + ": n" + axis + " = " + std::to_string(cells[k]) +
-                             ", expected at least 1 cell");
-        if (!std::isfinite(lower[k]) || !std::isfinite(upper[k]) || !(lower[k] < upper[k])) {
-            std::ostringstream message;
-            message << generator << ": lower " << axis << " = " << lower[k] << " must be below upper " << axis
-                    << " = " << upper[k];
-            throw InputError(message.str());
-        }
-    }
-}
 
 Mesh rectangle_grid(ElementKind kind, const Eigen::Vector2d& lower, const Eigen::Vector2d& upper, int nx, int ny)
 {
@@ -55,13 +34,13 @@ Mesh rectangle_grid(ElementKind kind, const Eigen::Vector2d& lower, const Eigen:
 
 Mesh rectangle_triangles(const Eigen::Vector2d& lower, const Eigen::Vector2d& upper, int nx, int ny)
 {
-    check_rectangle("rectangle_triangles", lower, upper, nx, ny);
+    check_grid_extent("rectangle_triangles", lower, upper, Eigen::Vector2i(nx, ny));
     return rectangle_grid(ElementKind::triangle_2d, lower, upper, nx, ny);
 }
 
 Mesh sheet_triangles(const Eigen::Vector2d& lower, const Eigen::Vector2d& upper, int nx, int ny)
 {
-    check_rectangle("sheet_triangles", lower, upper, nx, ny);
+    check_grid_extent("sheet_triangles", lower, upper, Eigen::Vector2i(nx, ny));
     return rectangle_grid(ElementKind::triangle_3d, lower, upper, nx, ny);
 }
 

@@ -10,7 +10,8 @@ namespace sinew {
 /// counterclockwise triangles (i,j)(i+1,j)(i+1,j+1) and (i,j)(i+1,j+1)(i,j+1).
 /// (nx+1)(ny+1) nodes numbered i + (nx+1)j, 2·nx·ny triangles of area
 /// |rectangle| / (2 nx ny), all in kDefaultGroupName, no fibers. Throws
-/// InputError when a cell count is below 1 or lower < upper fails.
+/// InputError when the extent or the cell counts fail check_grid_extent
+/// (grid_extent.hpp).
 Mesh rectangle_triangles(const Eigen::Vector2d& lower, const Eigen::Vector2d& upper, int nx, int ny);
 
 /// The same triangulation as a triangle_3d sheet in the plane z = 0 (nodes

@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 #include <utility>
+#include <vector>
 
 namespace sinew {
 namespace {
@@ -60,14 +61,15 @@ NodeFile read_node_file(const std::string& path)
         in.fail("number of attributes is " + std::to_string(attributes));
     if (markers != 0 && markers != 1)
         in.fail("number of boundary markers is " + std::to_string(markers) + ", expected 0 or 1");
+    in.require_room(attributes, 1, "attributes per point");
+    const long long values = 1LL + dimension + attributes + markers;
 
+    // Grown as the points are read, never sized by the header's count alone.
     NodeFile file;
-    file.nodes.resize(dimension, count);
-    file.lines.resize(count);
-    const std::size_t values = 1 + dimension + attributes + markers;
+    std::vector<double> coordinates;
     for (int i = 0; i < count; ++i) {
         in.require_next("point " + std::to_string(i + 1) + " of " + std::to_string(count));
-        in.expect_token_count(values, "point");
+        in.expect_token_count(static_cast<std::size_t>(values), "point");
         const int number = in.integer(0, "point number");
         if (i == 0) {
             if (number != 0 && number != 1)
@@ -78,12 +80,13 @@ NodeFile read_node_file(const std::string& path)
                     std::to_string(file.first_number + i));
         }
         for (int k = 0; k < dimension; ++k)
-            file.nodes(k, i) = in.number(1 + k, std::string("coordinate ") + "xyz"[k] + " of point " +
-                                                    std::to_string(number));
-        file.lines[i] = in.line_number();
+            coordinates.push_back(in.number(1 + k, std::string("coordinate ") + "xyz"[k] + " of point " +
+                                                       std::to_string(number)));
+        file.lines.push_back(in.line_number());
     }
     if (in.next())
         in.fail("more lines than the " + std::to_string(count) + " points the header declares");
+    file.nodes = Eigen::Map<const Eigen::MatrixXd>(coordinates.data(), dimension, count);
     return file;
 }
 
@@ -126,13 +129,15 @@ ElementFile read_element_file(const std::string& path, const std::string& node_p
                 std::to_string(corners) + " nodes");
     if (attributes < 0)
         in.fail("number of attributes is " + std::to_string(attributes));
+    in.require_room(attributes, 1, "attributes per element");
+    const long long values = 1LL + corners + attributes;
 
+    // Grown as the elements are read, never sized by the header's count alone.
     ElementFile file;
-    file.elements.resize(corners, count);
-    const std::size_t values = 1 + corners + attributes;
+    std::vector<int> corner_nodes;
     for (int e = 0; e < count; ++e) {
         in.require_next(shape + " " + std::to_string(e + 1) + " of " + std::to_string(count));
-        in.expect_token_count(values, shape);
+        in.expect_token_count(static_cast<std::size_t>(values), shape);
         in.integer(0, shape + " number");
         for (int k = 0; k < corners; ++k) {
             const int number = in.integer(1 + k, "node number");
@@ -142,9 +147,9 @@ ElementFile read_element_file(const std::string& path, const std::string& node_p
                         std::to_string(nodes.first_number) + " to " +
                         std::to_string(nodes.first_number + num_nodes - 1) + ")");
             for (int j = 0; j < k; ++j)
-                if (file.elements(j, e) == node)
+                if (corner_nodes[corner_nodes.size() - static_cast<std::size_t>(k - j)] == node)
                     in.fail("node number " + std::to_string(number) + " appears twice in the " + shape);
-            file.elements(k, e) = node;
+            corner_nodes.push_back(node);
         }
         if (attributes > 0)
             file.regions.push_back(in.number(1 + corners, "region attribute"));
@@ -152,6 +157,7 @@ ElementFile read_element_file(const std::string& path, const std::string& node_p
     }
     if (in.next())
         in.fail("more lines than the " + std::to_string(count) + " elements the header declares");
+    file.elements = Eigen::Map<const Eigen::MatrixXi>(corner_nodes.data(), corners, count);
     return file;
 }
 

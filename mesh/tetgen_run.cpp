@@ -13,6 +13,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <stdexcept>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
@@ -179,6 +180,7 @@ TetgenOutput run_tetgen(const Mesh& surface, const std::string& switches, const 
     int pipe_ends[2];
     if (::pipe(pipe_ends) != 0)
         throw std::runtime_error(source + ": cannot start TetGen (pipe: " + std::strerror(errno) + ")");
+    const pid_t parent = ::getpid();
     const pid_t child = ::fork();
     if (child < 0) {
         ::close(pipe_ends[0]);
@@ -186,6 +188,9 @@ TetgenOutput run_tetgen(const Mesh& surface, const std::string& switches, const 
         throw std::runtime_error(source + ": cannot start TetGen (fork: " + std::strerror(errno) + ")");
     }
     if (child == 0) {
+        // The child dies with sinew: killed or stopped, sinew takes TetGen along.
+        if (::prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || ::getppid() != parent)
+            ::_exit(kOtherFailure);
         ::close(pipe_ends[0]);
         run_child(surface, switches, pipe_ends[1]);
     }

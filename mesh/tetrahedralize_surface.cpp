@@ -1,11 +1,14 @@
 #include "sinew/mesh/tetrahedralize_surface.hpp"
 
+#include "sinew/core/format_number.hpp"
 #include "sinew/core/input_error.hpp"
 #include "sinew/mesh/element_orientation.hpp"
 #include "sinew/mesh/mesh_validation.hpp"
 #include "sinew/mesh/obj_reader.hpp"
 #include "sinew/mesh/remove_unused_nodes.hpp"
 #include "sinew/mesh/tetgen_run.hpp"
+
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
@@ -23,10 +26,11 @@ void check_options(const TetrahedralizeOptions& options, const std::string& sour
 {
     std::ostringstream message;
     if (!(std::isfinite(options.max_volume) && options.max_volume >= 0.0))
-        message << "max_volume = " << options.max_volume << " must be 0 (no bound) or positive";
+        message << "max_volume = " << format_number(options.max_volume) << " must be 0 (no bound) or positive";
     else if (!(options.max_radius_edge_ratio == 0.0 ||
                (std::isfinite(options.max_radius_edge_ratio) && options.max_radius_edge_ratio >= 1.0)))
-        message << "max_radius_edge_ratio = " << options.max_radius_edge_ratio << " must be 0 (off) or at least 1";
+        message << "max_radius_edge_ratio = " << format_number(options.max_radius_edge_ratio)
+                << " must be 0 (off) or at least 1";
     else
         return;
     throw InputError(source + ": tetrahedralize: " + message.str());
@@ -76,11 +80,43 @@ void check_no_self_intersection(const Mesh& surface, const std::string& source)
 
 /// TetGen's switches: p (mesh the surface as a piecewise linear complex),
 /// Q (quiet), q<ratio>, a<volume>.
+/// The volume a closed, consistently oriented surface encloses (divergence
+/// theorem): |Σ x0·(x1 × x2)| / 6 over its triangles.
+double enclosed_volume(const Mesh& surface)
+{
+    double sum = 0.0;
+    for (int e = 0; e < surface.num_elements(); ++e) {
+        const Eigen::Vector3d x0 = surface.nodes.col(surface.elements(0, e));
+        const Eigen::Vector3d x1 = surface.nodes.col(surface.elements(1, e));
+        const Eigen::Vector3d x2 = surface.nodes.col(surface.elements(2, e));
+        sum += x0.dot(x1.cross(x2));
+    }
+    return std::abs(sum) / 6.0;
+}
+
+/// No tet is larger than max_volume, so TetGen makes at least V / max_volume
+/// of them: refuse before starting when that exceeds kMaxGeneratedElements.
+void check_estimated_size(const Mesh& surface, const TetrahedralizeOptions& options, const std::string& source)
+{
+    if (options.max_volume <= 0.0)
+        return;
+    const double at_least = enclosed_volume(surface) / options.max_volume;
+    if (at_least > kMaxGeneratedElements)
+        throw InputError(source + ": tetrahedralize: max_volume = " + format_number(options.max_volume) +
+                         " asks for at least " + format_number(std::ceil(at_least)) +
+                         " tetrahedra (enclosed volume " + format_number(enclosed_volume(surface)) +
+                         "); the limit is " + format_number(kMaxGeneratedElements));
+}
+
+/// TetGen may add at most this many points (switch S): about six tets per
+/// point, so a run that reaches it would exceed kMaxGeneratedElements.
+constexpr int kMaxAddedPoints = static_cast<int>(kMaxGeneratedElements / 6);
+
 std::string tetgen_switches(const TetrahedralizeOptions& options)
 {
     std::ostringstream switches;
     switches.precision(std::numeric_limits<double>::max_digits10);
-    switches << "pQ";
+    switches << "pQS" << kMaxAddedPoints;
     if (options.max_radius_edge_ratio > 0.0)
         switches << "q" << options.max_radius_edge_ratio;
     if (options.max_volume > 0.0)
@@ -99,10 +135,15 @@ Mesh tetrahedralize_surface(const Mesh& surface, const std::string& source, cons
     validate_mesh(surface, source);
     check_closed(surface, source);
     check_no_self_intersection(surface, source);
+    check_estimated_size(surface, options, source);
 
     TetgenOutput output = run_tetgen(surface, tetgen_switches(options), source);
     if (output.tetrahedra.cols() == 0)
         throw InputError(source + ": TetGen produced no tetrahedra (does the surface enclose a volume?)");
+    if (output.points.cols() - surface.num_nodes() >= kMaxAddedPoints)
+        throw InputError(source + ": tetrahedralize: TetGen reached its limit of " + std::to_string(kMaxAddedPoints) +
+                         " added points before meeting the quality and volume bounds; relax max_volume or "
+                         "max_radius_edge_ratio");
     Mesh mesh;
     mesh.kind = ElementKind::tetrahedron;
     mesh.nodes = std::move(output.points);

@@ -3,14 +3,22 @@
 #include "sinew/core/input_error.hpp"
 #include "sinew/core/parse_number.hpp"
 
+#include <algorithm>
+#include <filesystem>
 #include <sstream>
 
 namespace sinew {
 
-TextLineReader::TextLineReader(const std::string& path, char comment) : path_(path), comment_(comment), in_(path)
+TextLineReader::TextLineReader(const std::string& path, char comment) : path_(path), comment_(comment)
 {
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error))
+        throw InputError(path + ": is a folder, not a file");
+    in_.open(path);
     if (!in_)
         throw InputError(path + ": cannot open file");
+    const std::uintmax_t size = std::filesystem::file_size(path, error);
+    file_size_ = error ? 0 : static_cast<long long>(size);
 }
 
 bool TextLineReader::next()
@@ -64,6 +72,14 @@ void TextLineReader::expect_at_least(std::size_t count, const std::string& what)
     if (tokens_.size() < count)
         fail(what + ": expected at least " + std::to_string(count) + " values, found " +
              std::to_string(tokens_.size()));
+}
+
+void TextLineReader::require_room(long long count, long long tokens_each, const std::string& what) const
+{
+    const long long most = file_size_ / (2 * std::max(1LL, tokens_each));
+    if (count > most)
+        fail("the header declares " + std::to_string(count) + " " + what + ", but the file's " +
+             std::to_string(file_size_) + " bytes hold at most " + std::to_string(most));
 }
 
 double TextLineReader::number(std::size_t i, const std::string& what) const

@@ -38,6 +38,14 @@ public:
     /// Throws unless the line has at least `count` tokens.
     void expect_at_least(std::size_t count, const std::string& what) const;
 
+    /// Throws unless the file can hold `count` more entries of at least
+    /// `tokens_each` tokens (each token and its separator take 2 bytes or
+    /// more): a header's count is checked against the file's size before
+    /// anything is allocated for it. `what` names the entries ("points").
+    void require_room(long long count, long long tokens_each, const std::string& what) const;
+    /// The size of the file in bytes.
+    long long file_size() const { return file_size_; }
+
     /// Token i as a finite double / an int; InputError naming the line and `what`.
     double number(std::size_t i, const std::string& what) const;
     int integer(std::size_t i, const std::string& what) const;
@@ -49,6 +57,7 @@ private:
     std::string text_;
     std::vector<std::string> tokens_;
     int line_number_ = 0;
+    long long file_size_ = 0;
 };
 
 } // namespace sinew

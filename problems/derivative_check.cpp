@@ -1,30 +1,54 @@
 #include "sinew/problems/derivative_check.hpp"
 
+#include "sinew/core/format_number.hpp"
+#include "sinew/core/input_error.hpp"
+
 #include <Eigen/Dense>
 
 #include <cmath>
 #include <limits>
 #include <random>
 #include <sstream>
+#include <vector>
 
 namespace sinew {
 namespace {
 
-/// Records (a, fd) at (row, col) when it is the worst seen so far; a
-/// non-finite error counts as infinite.
-void compare(DerivativeDiscrepancy& worst, int row, int col, double analytic, double fd)
+/// One entry of a derivative: the analytic value and its central difference.
+struct Entry {
+    int row, col;
+    double analytic, fd;
+};
+
+/// The worst of `entries` by |a − fd| / max(|fd|, floor), floor =
+/// kRelativeErrorFloor·(the largest |a| or |fd| of this derivative): relative
+/// for every entry that matters, and entries far below the derivative's scale
+/// (where central differences carry only round-off) are measured against a
+/// thousandth of it. A non-finite error counts as infinite.
+DerivativeDiscrepancy worst_of(const std::vector<Entry>& entries)
 {
-    ++worst.entries_compared;
-    double error = std::abs(analytic - fd) / std::max(1.0, std::abs(fd));
-    if (!std::isfinite(error))
-        error = std::numeric_limits<double>::infinity();
-    if (worst.row < 0 || error > worst.worst_relative_error) {
-        worst.worst_relative_error = error;
-        worst.row = row;
-        worst.col = col;
-        worst.analytic = analytic;
-        worst.finite_difference = fd;
+    double scale = 0.0;
+    for (const Entry& e : entries)
+        for (const double v : {e.analytic, e.fd})
+            if (std::isfinite(v))
+                scale = std::max(scale, std::abs(v));
+    const double floor = scale > 0.0 ? kRelativeErrorFloor * scale : 1.0;
+    DerivativeDiscrepancy worst;
+    worst.entries_compared = static_cast<int>(entries.size());
+    worst.error_floor = floor;
+    for (const Entry& e : entries) {
+        double error = std::abs(e.analytic - e.fd) / std::max(std::abs(e.fd), floor);
+        if (!std::isfinite(error))
+            error = std::numeric_limits<double>::infinity();
+        if (worst.row < 0 || error > worst.worst_relative_error) {
+            worst.worst_relative_error = error;
+            worst.row = e.row;
+            worst.col = e.col;
+            worst.analytic = e.analytic;
+            worst.finite_difference = e.fd;
+        }
     }
+    return worst;
 }
 
 /// Empty when every pattern entry is inside the matrix (and in the lower
@@ -75,7 +99,7 @@ std::string describe(const char* what, const DerivativeDiscrepancy& d, bool two_
         out << "nothing to compare";
         return out.str();
     }
-    out << "worst relative error " << d.worst_relative_error << " at ";
+    out << "worst relative error " << d.worst_relative_error << " (floor " << d.error_floor << ") at ";
     if (two_indices)
         out << "(" << d.row << ", " << d.col << ")";
     else
@@ -107,7 +131,18 @@ DerivativeCheckReport check_derivatives(Nlp& nlp, Nlp::ConstVectorRef x_in, cons
 {
     const int n = nlp.num_variables();
     const int m = nlp.num_constraints();
+    if (n > kMaxCheckedVariables)
+        throw InputError("derivative check of " + nlp.name() + ": " + std::to_string(n) +
+                         " variables; the check compares dense n x n matrices and takes at most " +
+                         std::to_string(kMaxCheckedVariables));
+    if (!(options.step > 0.0 && std::isfinite(options.step)))
+        throw InputError("derivative check: step = " + format_number(options.step) +
+                         " is invalid; it must be a positive finite number");
+    if (!std::isfinite(options.sigma))
+        throw InputError("derivative check: sigma = " + format_number(options.sigma) + " is not finite");
     const Eigen::VectorXd x = x_in;
+    if (!x.allFinite())
+        throw InputError("derivative check of " + nlp.name() + ": the point x is not finite");
     DerivativeCheckReport report;
 
     std::mt19937 rng(options.seed);
@@ -138,17 +173,18 @@ DerivativeCheckReport check_derivatives(Nlp& nlp, Nlp::ConstVectorRef x_in, cons
     // of J, and ∇L gives column j of ∇²L.
     Eigen::MatrixXd hessian_fd(n, n);
     Eigen::VectorXd c_plus(m), c_minus(m);
+    std::vector<Entry> gradient_entries, jacobian_entries, hessian_entries;
     for (int j = 0; j < n; ++j) {
         const double h = options.step * std::max(1.0, std::abs(x[j]));
         Eigen::VectorXd xp = x, xm = x;
         xp[j] += h;
         xm[j] -= h;
-        compare(report.gradient, j, 0, grad[j], (nlp.objective(xp) - nlp.objective(xm)) / (2 * h));
+        gradient_entries.push_back({j, 0, grad[j], (nlp.objective(xp) - nlp.objective(xm)) / (2 * h)});
         if (m > 0) {
             nlp.constraints(xp, c_plus);
             nlp.constraints(xm, c_minus);
             for (int i = 0; i < m; ++i)
-                compare(report.jacobian, i, j, jacobian(i, j), (c_plus[i] - c_minus[i]) / (2 * h));
+                jacobian_entries.push_back({i, j, jacobian(i, j), (c_plus[i] - c_minus[i]) / (2 * h)});
         }
         hessian_fd.col(j) = (lagrangian_gradient(nlp, xp, options.sigma, lambda) -
                              lagrangian_gradient(nlp, xm, options.sigma, lambda)) / (2 * h);
@@ -157,7 +193,10 @@ DerivativeCheckReport check_derivatives(Nlp& nlp, Nlp::ConstVectorRef x_in, cons
     // entry missing from the pattern shows as a discrepancy too.
     for (int j = 0; j < n; ++j)
         for (int i = j; i < n; ++i)
-            compare(report.hessian, i, j, hessian(i, j), 0.5 * (hessian_fd(i, j) + hessian_fd(j, i)));
+            hessian_entries.push_back({i, j, hessian(i, j), 0.5 * (hessian_fd(i, j) + hessian_fd(j, i))});
+    report.gradient = worst_of(gradient_entries);
+    report.jacobian = worst_of(jacobian_entries);
+    report.hessian = worst_of(hessian_entries);
     return report;
 }
 

@@ -5,10 +5,20 @@
 
 namespace sinew {
 
+/// Entries of a derivative below this fraction of its largest entry are
+/// compared against that fraction of it instead of their own size (docs/solvers.md).
+inline constexpr double kRelativeErrorFloor = 1e-3;
+/// The check is dense in n: it refuses problems with more variables than this
+/// (a 4000 x 4000 matrix of doubles is 128 MB).
+inline constexpr int kMaxCheckedVariables = 4000;
+
 /// The worst disagreement found in one derivative (gradient, Jacobian or
 /// Hessian) between the analytic values and central finite differences.
 struct DerivativeDiscrepancy {
-    double worst_relative_error = 0.0;  ///< |analytic - fd| / max(1, |fd|)
+    /// |analytic − fd| / max(|fd|, error_floor), error_floor =
+    /// kRelativeErrorFloor · (largest |analytic| or |fd| of this derivative).
+    double worst_relative_error = 0.0;
+    double error_floor = 0.0;
     int row = -1;                       ///< where it is (-1: nothing compared)
     int col = -1;                       ///< column; 0 for the gradient
     double analytic = 0.0;
@@ -36,8 +46,8 @@ struct DerivativeCheckOptions {
 };
 
 /// Compares gradient, Jacobian and Hessian of the Lagrangian (with random λ)
-/// at x against central differences of f, c and ∇L. Dense in n, so meant for
-/// problems up to a few thousand variables.
+/// at x against central differences of f, c and ∇L. Dense in n: InputError for
+/// more than kMaxCheckedVariables variables.
 DerivativeCheckReport check_derivatives(Nlp& nlp, Nlp::ConstVectorRef x,
                                         const DerivativeCheckOptions& options = {});
 

@@ -11,7 +11,8 @@ namespace sinew {
 /// for holds, feasibility included; x is the last (best) iterate in every case.
 enum class Status {
     converged,           ///< optimality and feasibility tolerances met
-    tolerance_not_met,   ///< the backend stopped on its own success test, but a requested tolerance does not hold at x
+    tolerance_not_met,   ///< the backend stopped on its own success test, but a requested tolerance does not hold
+                         ///< at x (each within kFarFromTolerance times; beyond that the status is failed)
     max_iterations,      ///< iteration or evaluation limit reached first
     stalled,             ///< no further progress possible (round-off, tiny steps) before tolerances held
     line_search_failed,  ///< no acceptable step along the search direction
@@ -20,6 +21,10 @@ enum class Status {
     user_stop,           ///< stopped by a callback or a time limit
     failed,              ///< any other failure; the message says which
 };
+
+/// A backend's success stop whose constraint violation or KKT residual exceeds
+/// this multiple of its tolerance is `failed`, not `tolerance_not_met`.
+inline constexpr double kFarFromTolerance = 1e3;
 
 /// "converged", "max_iterations", … (the names used in JSON and tables).
 std::string to_string(Status status);

@@ -1,5 +1,6 @@
 #include "sinew/solvers/solver.hpp"
 
+#include "sinew/core/format_number.hpp"
 #include "sinew/core/input_error.hpp"
 #include "sinew/solvers/backends/ipopt_solver.hpp"
 #include "sinew/solvers/backends/nlopt_solver.hpp"
@@ -17,7 +18,7 @@ void validate(const SolverOptions& options)
 {
     auto positive = [](double value, const char* name) {
         if (!(value > 0.0) || !std::isfinite(value))
-            throw InputError(std::string("solver option ") + name + " = " + std::to_string(value) +
+            throw InputError(std::string("solver option ") + name + " = " + format_number(value) +
                              " is invalid; it must be a positive finite number");
     };
     positive(options.tolerance, "tol");
@@ -26,6 +27,9 @@ void validate(const SolverOptions& options)
     if (options.max_iterations < 1)
         throw InputError("solver option max_iter = " + std::to_string(options.max_iterations) +
                          " is invalid; it must be at least 1");
+    if (options.verbosity < 0 || options.verbosity > kMaxVerbosity)
+        throw InputError("verbosity " + std::to_string(options.verbosity) + " is invalid; it must lie in [0, " +
+                         std::to_string(kMaxVerbosity) + "]");
 }
 
 const std::vector<std::unique_ptr<Solver>>& all_solvers()
@@ -92,21 +96,34 @@ void measure(Nlp& nlp, const SolverOptions& options, Result& result)
             << options.constraint_tolerance;
     else if (!(result.kkt_residual <= kkt_bound))
         why << "KKT residual " << result.kkt_residual << " > kkt_tol · max(1, |grad f|) = " << kkt_bound;
-    if (!why.str().empty()) {
-        result.status = Status::tolerance_not_met;
-        result.message += (result.message.empty() ? "" : "; ") + why.str();
-    }
+    if (why.str().empty())
+        return;
+    // Close to a solution the backend's success test and ours may disagree a
+    // little; a "success" far from one (an early stop while infeasible, a
+    // divergence) is a failure, whatever the backend called it.
+    const bool far = result.constraint_violation > kFarFromTolerance * options.constraint_tolerance ||
+                     !(result.kkt_residual <= kFarFromTolerance * kkt_bound);
+    result.status = far ? Status::failed : Status::tolerance_not_met;
+    result.message += (result.message.empty() ? "" : "; but ") + why.str() +
+                      (far ? ", more than " + format_number(kFarFromTolerance) + " times the tolerance" : "");
 }
 
 } // namespace
 
-Result solve(Nlp& nlp, const std::string& solver_name, const SolverOptions& options)
+void check_solve(const Nlp& nlp, const std::string& solver_name, const SolverOptions& options)
 {
     validate(options);
     const Solver& solver = find_solver(solver_name);
+    solver.check_options(options);
     if (const auto why = solver.refusal(nlp))
         throw InputError("solver " + solver.name() + " cannot solve " + nlp.name() + " (" + classify(nlp).describe() +
                          "): " + *why);
+}
+
+Result solve(Nlp& nlp, const std::string& solver_name, const SolverOptions& options)
+{
+    check_solve(nlp, solver_name, options);
+    const Solver& solver = find_solver(solver_name);
     const auto start = std::chrono::steady_clock::now();
     Result result = solver.run(nlp, options);
     result.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -19,6 +19,9 @@ public:
     /// Why this solver cannot handle `nlp` (e.g. "LBFGS does not take
     /// constraints"), or nothing when it can.
     virtual std::optional<std::string> refusal(const Nlp& nlp) const = 0;
+    /// Throws InputError naming the first invalid backend option (its name
+    /// and value) without solving anything; run() accepts what this accepts.
+    virtual void check_options(const SolverOptions& options) const = 0;
     /// Runs the solve. Does not throw for a solve that fails to converge: the
     /// status says so. Throws InputError for invalid options.
     virtual Result run(Nlp& nlp, const SolverOptions& options) const = 0;
@@ -29,6 +32,12 @@ const std::vector<std::unique_ptr<Solver>>& all_solvers();
 
 /// The solver called `name`; InputError listing the valid names otherwise.
 const Solver& find_solver(const std::string& name);
+
+/// Everything solve() checks before it starts, for callers that must refuse
+/// bad input before they write anything: the common options, the solver's
+/// name, its backend options, and whether it accepts `nlp`. InputError when
+/// one fails.
+void check_solve(const Nlp& nlp, const std::string& solver, const SolverOptions& options);
 
 /// Solves `nlp` with the named solver: refuses (InputError) a problem of a kind
 /// the solver cannot handle, then measures the result uniformly — objective,

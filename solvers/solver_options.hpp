@@ -5,6 +5,9 @@
 
 namespace sinew {
 
+/// The largest verbosity: 2 is every backend's own output.
+inline constexpr int kMaxVerbosity = 2;
+
 /// Options common to every solver, plus backend options by name.
 ///
 /// A solve is "converged" when the backend stopped on its own success
@@ -21,7 +24,7 @@ struct SolverOptions {
     double kkt_tolerance = 1e-6;
     /// Iterations (Ipopt, Newton) or evaluations of f and ∇f (NLopt).
     int max_iterations = 3000;
-    /// 0 silent, 1 one table row per iteration, 2 and more backend chatter.
+    /// 0 silent, 1 one table row per iteration, 2 (kMaxVerbosity) backend chatter.
     int verbosity = 0;
     /// Where the table goes; standard output when null.
     std::ostream* log = nullptr;
@@ -31,7 +34,7 @@ struct SolverOptions {
 };
 
 /// Throws InputError naming the first invalid common option (non-positive
-/// tolerance or iteration limit).
+/// tolerance or iteration limit, verbosity outside [0, kMaxVerbosity]).
 void validate(const SolverOptions& options);
 
 } // namespace sinew

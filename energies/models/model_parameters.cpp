@@ -1,5 +1,6 @@
 #include "sinew/energies/models/model_parameters.hpp"
 
+#include "sinew/core/format_number.hpp"
 #include "sinew/core/input_error.hpp"
 #include "sinew/core/parse_number.hpp"
 
@@ -23,16 +24,17 @@ const ParameterSpec& find_spec(const std::string& model, const std::vector<Param
                      (valid.empty() ? "(none)" : valid));
 }
 
-void check_range(const std::string& model, const ParameterSpec& spec, double value)
+/// `written` is the value as the user wrote it (quoted as such), or empty.
+void check_range(const std::string& model, const ParameterSpec& spec, double value, const std::string& written = "")
 {
     const bool below = spec.lower_exclusive ? value <= spec.lower : value < spec.lower;
     if (!std::isfinite(value) || below || value > spec.upper) {
-        std::ostringstream out;
-        out << "model " << model << ": parameter " << spec.name << " = " << value << " is out of range; it must be ";
-        out << (spec.lower_exclusive ? "> " : ">= ") << spec.lower;
+        std::string message = "model " + model + ": parameter " + spec.name + " = " +
+                              (written.empty() ? format_number(value) : written) + " is out of range; it must be " +
+                              (spec.lower_exclusive ? "> " : ">= ") + format_number(spec.lower);
         if (spec.upper < 1e300)
-            out << " and <= " << spec.upper;
-        throw InputError(out.str());
+            message += " and <= " + format_number(spec.upper);
+        throw InputError(message);
     }
 }
 
@@ -65,7 +67,7 @@ ParameterValues resolve_parameters(const std::string& model, const std::vector<P
             continue;
         }
         const double value = parse_finite_double(text, "model " + model + ": parameter " + name);
-        check_range(model, spec, value);
+        check_range(model, spec, value, text);
         values[name] = value;
     }
     return values;

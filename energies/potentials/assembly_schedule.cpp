@@ -90,8 +90,10 @@ AssemblySchedule schedule_assembly(const Eigen::MatrixXd& nodes, const Eigen::Ma
         static_cast<int>(std::max(1.0, std::min({slabs, static_cast<double>(count / kMinElementsPerBlock), 4096.0})));
     std::vector<int> block_of(static_cast<std::size_t>(count));
     for (int e = 0; e < count; ++e) {
+        // In [0, 1] for any coordinates, also where sums overflowed (NaN → 0).
         const double relative = length > 0.0 ? (position[e] - low[axis]) / length : 0.0;
-        block_of[e] = std::min(num_blocks - 1, static_cast<int>(relative * num_blocks));
+        const double clamped = relative >= 0.0 ? std::min(relative, 1.0) : 0.0;
+        block_of[e] = std::min(num_blocks - 1, static_cast<int>(clamped * num_blocks));
     }
 
     const std::vector<int> color = color_blocks(elements, block_of, num_blocks, static_cast<int>(nodes.cols()));

@@ -1,5 +1,6 @@
 #include "sinew/energies/potentials/element_rest_shape.hpp"
 
+#include "sinew/core/format_number.hpp"
 #include "sinew/core/input_error.hpp"
 
 #include <Eigen/Geometry>
@@ -41,7 +42,7 @@ double checked_measure(const Mesh& mesh, int element)
     const double scale = std::pow(longest_edge<Cols>(Dm), Cols);
     if (!(measure > 1e-12 * scale))
         throw InputError(to_string(mesh.kind) + " element " + std::to_string(element) + " is degenerate: rest " +
-                         (Cols == 3 ? "volume " : "area ") + std::to_string(measure));
+                         (Cols == 3 ? "volume " : "area ") + format_number(measure));
     return measure;
 }
 

@@ -40,6 +40,7 @@ struct SceneSolverSettings {
     std::optional<double> tolerance;
     std::optional<int> max_iterations;
     std::map<std::string, std::string> options;  ///< backend options, as text
+    std::string source;  ///< where these settings are written ("scene.json: solver"), for messages
 };
 
 /// Which VTU files a solve writes into the output folder.

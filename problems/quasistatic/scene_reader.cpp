@@ -1,18 +1,23 @@
 #include "sinew/problems/quasistatic/scene_reader.hpp"
 
+#include "sinew/core/format_number.hpp"
 #include "sinew/core/input_error.hpp"
 #include "sinew/energies/potentials/element_model.hpp"
 #include "sinew/energies/potentials/lumped_mass.hpp"
 #include "sinew/energies/potentials/obstacle_penalty_potential.hpp"
 #include "sinew/mesh/box_tets.hpp"
 #include "sinew/mesh/fusiform_muscle.hpp"
+#include "sinew/mesh/mesh_validation.hpp"
 #include "sinew/mesh/read_mesh.hpp"
 #include "sinew/mesh/rectangle_triangles.hpp"
 #include "sinew/mesh/tetrahedralize_surface.hpp"
 #include "sinew/problems/quasistatic/node_selection.hpp"
 #include "sinew/problems/quasistatic/strict_json.hpp"
 
+#include <Eigen/Eigenvalues>
+
 #include <cmath>
+#include <complex>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -20,9 +25,8 @@
 namespace sinew {
 namespace {
 
-/// Generators refuse more elements than this (a typo in "cells" should be an
-/// error, not an out-of-memory crash).
-constexpr double kMaxGeneratedElements = 2e7;
+/// A prescribed rotation turns by at most this many degrees (100 turns).
+constexpr double kMaxTurnDegrees = 36000.0;
 
 /// Runs `work`, prefixing any InputError it throws with the cursor's place.
 template <typename Work>
@@ -59,6 +63,12 @@ Eigen::Vector3i cell_counts(const JsonCursor& cells, int dimension, int& total)
     return n;
 }
 
+/// A corner of a generator's extent: coordinates within ±kMaxCoordinate.
+Eigen::VectorXd extent_corner(const JsonCursor& corner, int dimension)
+{
+    return corner.vector_in(dimension, -kMaxCoordinate, kMaxCoordinate);
+}
+
 Mesh generated_mesh(const JsonCursor& m)
 {
     const std::string generator = m.at("generator").string();
@@ -66,13 +76,13 @@ Mesh generated_mesh(const JsonCursor& m)
     if (generator == "box") {
         m.expect_object({"generator", "lower", "upper", "cells"});
         const Eigen::Vector3i n = cell_counts(m.at("cells"), 3, total);
-        const Eigen::Vector3d lower = m.at("lower").vector(3), upper = m.at("upper").vector(3);
+        const Eigen::Vector3d lower = extent_corner(m.at("lower"), 3), upper = extent_corner(m.at("upper"), 3);
         return at_place(m, [&] { return box_tets(lower, upper, n[0], n[1], n[2]); });
     }
     if (generator == "rectangle" || generator == "sheet") {
         m.expect_object({"generator", "lower", "upper", "cells"});
         const Eigen::Vector3i n = cell_counts(m.at("cells"), 2, total);
-        const Eigen::Vector2d lower = m.at("lower").vector(2), upper = m.at("upper").vector(2);
+        const Eigen::Vector2d lower = extent_corner(m.at("lower"), 2), upper = extent_corner(m.at("upper"), 2);
         return at_place(m, [&] {
             return generator == "rectangle" ? rectangle_triangles(lower, upper, n[0], n[1])
                                             : sheet_triangles(lower, upper, n[0], n[1]);
@@ -84,7 +94,7 @@ Mesh generated_mesh(const JsonCursor& m)
         FusiformMuscleShape shape;
         auto read_length = [&](const char* key, double& value) {
             if (auto v = m.find(key))
-                value = v->number();
+                value = v->number_in(-kMaxCoordinate, kMaxCoordinate);  // the generator checks the sign
         };
         auto read_count = [&](const char* key, int& value) {
             if (auto v = m.find(key))
@@ -172,14 +182,7 @@ ParameterText parameter_text(const JsonCursor& p)
     ParameterText text;
     for (const std::string& key : p.keys()) {
         const JsonCursor value = p.at(key);
-        if (value.is_string())
-            text[key] = value.string();
-        else {
-            std::ostringstream number;
-            number.precision(17);
-            number << value.number();
-            text[key] = number.str();
-        }
+        text[key] = value.is_string() ? value.string() : value.number_text();
     }
     return text;
 }
@@ -187,8 +190,10 @@ ParameterText parameter_text(const JsonCursor& p)
 struct Material {
     ElementModel model;
     double density = 0.0;
-    std::optional<Eigen::VectorXd> fiber;      ///< one fiber for the whole group
+    std::optional<Eigen::VectorXd> fiber;      ///< one fiber for the whole group,
+    std::optional<JsonCursor> fiber_at;        ///< and where it is written
     std::optional<JsonCursor> fiber_list;      ///< a fiber per element of the group, in mesh order
+    std::optional<JsonCursor> fiber_of_mesh;   ///< "mesh", said explicitly: the mesh must have a fiber field
     double activation = 0.0;
     double damage = 0.0;
 };
@@ -205,14 +210,18 @@ Material material(const JsonCursor& m, ElementKind kind)
     if (auto v = m.find("fiber")) {
         // [a…]: constant; {"per_element": [[a…], …]}: one per element of the
         // group; "mesh": the generator's fiber field (also the default).
-        if (v->is_array())
+        if (v->is_array()) {
             out.fiber = v->vector();
-        else if (v->is_object()) {
+            out.fiber_at = v;
+        } else if (v->is_object()) {
             v->expect_object({"per_element"});
             out.fiber_list = v->at("per_element");
             out.fiber_list->size();  // an array, or an error here
-        } else if (v->string() != "mesh")
+        } else if (v->is_string() && v->string() == "mesh") {
+            out.fiber_of_mesh = v;
+        } else {
             v->fail("expected an array of numbers, {\"per_element\": [...]}, or \"mesh\"");
+        }
     }
     if (auto v = m.find("activation"))
         out.activation = v->number_in(0.0, 1.0);
@@ -263,6 +272,23 @@ std::vector<Material> group_materials(const JsonCursor& list, const Mesh& mesh)
     return out;
 }
 
+/// A load step s moves a set by M(s) = I + s(M − I) (scene.hpp). det M(s) =
+/// Π(1 + s μᵢ) over the eigenvalues μᵢ of M − I vanishes for some s ∈ (0, 1]
+/// exactly when a real μᵢ ≤ −1, i.e. when M has a real eigenvalue λ ≤ 0: such
+/// a map (singular, a reflection, a flattening) collapses the set on the way.
+void require_blend_regular(const JsonCursor& where, const Eigen::MatrixXd& M)
+{
+    const double scale = M.cwiseAbs().maxCoeff();
+    const Eigen::VectorXcd eigenvalues = M.eigenvalues();
+    for (Eigen::Index i = 0; i < eigenvalues.size(); ++i) {
+        const std::complex<double> lambda = eigenvalues[i];
+        if (std::abs(lambda.imag()) <= 1e-12 * scale && lambda.real() <= 1e-12 * scale)
+            where.fail("the map has the real eigenvalue " + format_number(lambda.real()) +
+                       " <= 0: it is singular or reverses orientation, and the load steps I + s(M - I) "
+                       "pass through a singular map");
+    }
+}
+
 PrescribedMotion motion(const JsonCursor& b, int dimension)
 {
     PrescribedMotion out;
@@ -277,7 +303,7 @@ PrescribedMotion motion(const JsonCursor& b, int dimension)
         else
             r->expect_object({"angle_deg", "center"});
         out.rotation = true;
-        out.angle = r->at("angle_deg").number() * M_PI / 180.0;
+        out.angle = r->at("angle_deg").number_in(-kMaxTurnDegrees, kMaxTurnDegrees) * (M_PI / 180.0);
         if (dimension == 3) {
             const Eigen::Vector3d axis = r->at("axis").vector(3);
             if (!(axis.norm() > 0.0))
@@ -287,8 +313,10 @@ PrescribedMotion motion(const JsonCursor& b, int dimension)
         if (auto c = r->find("center"))
             out.center = c->vector(dimension);
     }
-    if (auto m = b.find("map"))
+    if (auto m = b.find("map")) {
         out.map = m->matrix(dimension, dimension);
+        require_blend_regular(*m, out.map);
+    }
     if (auto t = b.find("translation"))
         out.translation = t->vector(dimension);
     return out;
@@ -296,11 +324,16 @@ PrescribedMotion motion(const JsonCursor& b, int dimension)
 
 std::string read_text_file(const std::string& path)
 {
+    std::error_code ignored;
+    if (std::filesystem::is_directory(path, ignored))
+        throw InputError(path + ": is a folder, not a scene file");
     std::ifstream in(path, std::ios::binary);
     if (!in)
         throw InputError(path + ": cannot read file");
     std::ostringstream text;
     text << in.rdbuf();
+    if (in.bad())
+        throw InputError(path + ": read error");
     return text.str();
 }
 
@@ -308,8 +341,8 @@ std::string read_text_file(const std::string& path)
 
 Scene parse_scene(const std::string& text, const std::string& document, const std::string& base_folder)
 {
-    const nlohmann::json json = parse_json_text(text, document);
-    const JsonCursor root(json, document);
+    const JsonDocument json = parse_json_text(text, document);
+    const JsonCursor root(json);
     root.expect_object({"name", "description", "mesh", "materials", "gravity", "boundary", "loads", "obstacles",
                         "dirichlet", "load_steps", "solver", "output"});
     Scene scene;
@@ -342,7 +375,9 @@ Scene parse_scene(const std::string& text, const std::string& document, const st
         const Material& m = materials[group];
         const size_t rank = rank_in_group[group]++;
         if (m.fiber)
-            at_place(material_list, [&] { scene.elastic->set_fiber(e, *m.fiber); });
+            at_place(*m.fiber_at, [&] { scene.elastic->set_fiber(e, *m.fiber); });
+        if (m.fiber_of_mesh && mesh.element_fibers.size() == 0)
+            m.fiber_of_mesh->fail("the mesh has no fiber field (give the fiber as [a...] or per_element)");
         if (m.fiber_list) {
             if (rank >= m.fiber_list->size())
                 m.fiber_list->fail("has " + std::to_string(m.fiber_list->size()) + " fibers, group '" +
@@ -452,6 +487,7 @@ Scene parse_scene(const std::string& text, const std::string& document, const st
 
     if (auto s = root.find("solver")) {
         s->expect_object({"name", "tolerance", "max_iterations", "options"});
+        scene.solver.source = s->where();
         if (auto v = s->find("name"))
             scene.solver.name = v->string();
         if (auto v = s->find("tolerance"))
@@ -489,9 +525,9 @@ Scene parse_scene(const std::string& text, const std::string& document, const st
 
 std::string scene_description(const std::string& text)
 {
-    const nlohmann::json json = parse_json_text(text, "scene");
-    const auto found = json.find("description");
-    return found != json.end() && found->is_string() ? found->get<std::string>() : std::string();
+    const JsonDocument json = parse_json_text(text, "scene");
+    const auto found = json.root.find("description");
+    return found != json.root.end() && found->is_string() ? found->get<std::string>() : std::string();
 }
 
 Scene read_scene_file(const std::string& path)

@@ -10,15 +10,25 @@
 #include <Eigen/Core>
 
 #include <initializer_list>
+#include <map>
 #include <optional>
 #include <string>
 
 namespace sinew {
 
+/// A parsed JSON document and the text of each of its non-integer numbers as
+/// the user wrote it, by cursor path ("materials[0].parameters.A"), so that
+/// messages and parameters quote "4.9e-324" as written, not as re-printed.
+struct JsonDocument {
+    std::string name;  ///< names the source in messages (a file path, a built-in scene)
+    nlohmann::json root;
+    std::map<std::string, std::string> number_text;
+};
+
 class JsonCursor {
 public:
-    /// `document` names the source in messages (a file path, a built-in scene).
-    JsonCursor(const nlohmann::json& value, std::string document, std::string path = "");
+    /// The root of `document`, which must outlive the cursor.
+    explicit JsonCursor(const JsonDocument& document);
 
     /// "document: path" (or "document" at the root), the prefix of messages.
     std::string where() const;
@@ -47,6 +57,8 @@ public:
 
     /// A finite number; InputError otherwise.
     double number() const;
+    /// The number as written in the document (for integers, as printed).
+    std::string number_text() const;
     /// A finite number in [lower, upper].
     double number_in(double lower, double upper) const;
     /// A whole number in [lower, upper].
@@ -55,17 +67,22 @@ public:
     bool boolean() const;
     /// An array of `size` finite numbers (any size when size < 0).
     Eigen::VectorXd vector(int size = -1) const;
+    /// An array of `size` numbers, each in [lower, upper].
+    Eigen::VectorXd vector_in(int size, double lower, double upper) const;
     /// An array of `rows` arrays of `cols` finite numbers.
     Eigen::MatrixXd matrix(int rows, int cols) const;
 
 private:
+    JsonCursor(const nlohmann::json& value, const JsonDocument& document, std::string path);
+
     const nlohmann::json* value_;
-    std::string document_;
+    const JsonDocument* document_;
     std::string path_;
 };
 
 /// Parses JSON text; InputError "document: line L, column C: …" for a syntax
-/// error.
-nlohmann::json parse_json_text(const std::string& text, const std::string& document);
+/// error, "document: path: key 'k' appears twice" for a repeated key (which
+/// a plain parser would resolve silently by keeping one of the two).
+JsonDocument parse_json_text(const std::string& text, const std::string& document);
 
 } // namespace sinew

@@ -252,6 +252,34 @@ std::string describe(Ipopt::ApplicationReturnStatus s)
     }
 }
 
+/// An Ipopt application with sinew's settings and the backend options set
+/// and checked; InputError naming an option Ipopt rejects.
+Ipopt::SmartPtr<Ipopt::IpoptApplication> configured_application(const SolverOptions& options)
+{
+    Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
+    // Ipopt prints its own complaint about a rejected option on standard
+    // output; the InputError below says it in one line. Its console comes
+    // back, for verbosity 2, once every option is accepted.
+    app->Jnlst()->DeleteAllJournals();
+    Ipopt::OptionsList& list = *app->Options();
+    // Silence needs both print_level 0 and sb (the banner); the table
+    // comes from intermediate_callback through ProgressLog instead.
+    list.SetIntegerValue("print_level", options.verbosity >= 2 ? 5 : 0);
+    list.SetStringValue("sb", "yes");
+    list.SetNumericValue("tol", options.tolerance);
+    list.SetNumericValue("constr_viol_tol", options.constraint_tolerance);
+    list.SetIntegerValue("max_iter", options.max_iterations);
+    list.SetStringValue("hessian_approximation", "exact");
+    for (const auto& [key, value] : options.backend)
+        set_ipopt_option(list, key, value);
+    if (options.verbosity >= 2)
+        app->Jnlst()->AddFileJournal("console", "stdout", Ipopt::J_ITERSUMMARY);
+    // Initialize("") skips ./ipopt.opt, which would override the options above.
+    if (app->Initialize("") != Ipopt::Solve_Succeeded)
+        throw InputError("ipopt: initialization failed (check the options passed to it)");
+    return app;
+}
+
 class IpoptSolver : public Solver {
 public:
     std::string name() const override { return "ipopt"; }
@@ -261,26 +289,12 @@ public:
     }
     std::optional<std::string> refusal(const Nlp&) const override { return std::nullopt; }
 
+    void check_options(const SolverOptions& options) const override { configured_application(options); }
+
     Result run(Nlp& nlp, const SolverOptions& options) const override
     {
         Result result;
-        Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
-        Ipopt::OptionsList& list = *app->Options();
-        // Silence needs both print_level 0 and sb (the banner); the table
-        // comes from intermediate_callback through ProgressLog instead.
-        list.SetIntegerValue("print_level", options.verbosity >= 2 ? 5 : 0);
-        list.SetStringValue("sb", "yes");
-        list.SetNumericValue("tol", options.tolerance);
-        list.SetNumericValue("constr_viol_tol", options.constraint_tolerance);
-        list.SetIntegerValue("max_iter", options.max_iterations);
-        list.SetStringValue("hessian_approximation", "exact");
-        for (const auto& [key, value] : options.backend)
-            set_ipopt_option(list, key, value);
-
-        // Initialize("") skips ./ipopt.opt, which would override the options above.
-        if (app->Initialize("") != Ipopt::Solve_Succeeded)
-            throw InputError("ipopt: initialization failed (check the options passed to it)");
-
+        Ipopt::SmartPtr<Ipopt::IpoptApplication> app = configured_application(options);
         Ipopt::SmartPtr<TnlpAdapter> adapter = new TnlpAdapter(nlp, options, result);
         const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(Ipopt::SmartPtr<Ipopt::TNLP>(adapter));
         result.status = to_status(status);

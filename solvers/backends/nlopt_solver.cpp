@@ -246,18 +246,25 @@ NloptSettings read_settings(const std::string& solver, const SolverOptions& opti
     s.xtol_rel = options.tolerance;
     for (const auto& [key, value] : options.backend) {
         const std::string what = solver + " option " + key;
+        // Every setting is a tolerance, a time or a count: 0 turns it off,
+        // a negative value is a mistake (NLopt itself would take it silently).
+        const auto non_negative = [&](double number) {
+            if (number < 0.0)
+                throw InputError(what + " = " + value + " is invalid; it must be at least 0 (0: off)");
+            return number;
+        };
         if (key == "ftol_rel")
-            s.ftol_rel = parse_finite_double(value, what);
+            s.ftol_rel = non_negative(parse_finite_double(value, what));
         else if (key == "ftol_abs")
-            s.ftol_abs = parse_finite_double(value, what);
+            s.ftol_abs = non_negative(parse_finite_double(value, what));
         else if (key == "xtol_rel")
-            s.xtol_rel = parse_finite_double(value, what);
+            s.xtol_rel = non_negative(parse_finite_double(value, what));
         else if (key == "xtol_abs")
-            s.xtol_abs = parse_finite_double(value, what);
+            s.xtol_abs = non_negative(parse_finite_double(value, what));
         else if (key == "maxtime")
-            s.maxtime = parse_finite_double(value, what);
+            s.maxtime = non_negative(parse_finite_double(value, what));
         else if (key == "vector_storage")
-            s.vector_storage = parse_int(value, what);
+            s.vector_storage = static_cast<int>(non_negative(parse_int(value, what)));
         else
             throw InputError("unknown " + solver +
                              " option '" + key + "'; valid options: ftol_rel, ftol_abs, xtol_rel, xtol_abs, "
@@ -308,6 +315,8 @@ public:
                    " variables (this problem has " + std::to_string(nlp.num_variables()) + ")";
         return std::nullopt;
     }
+
+    void check_options(const SolverOptions& options) const override { read_settings(name_, options); }
 
     Result run(Nlp& nlp, const SolverOptions& options) const override
     {

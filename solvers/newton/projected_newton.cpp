@@ -1,5 +1,6 @@
 #include "sinew/solvers/newton/projected_newton.hpp"
 
+#include "sinew/core/format_number.hpp"
 #include "sinew/core/input_error.hpp"
 #include "sinew/core/parse_number.hpp"
 #include "sinew/solvers/linear/linear_solver.hpp"
@@ -42,9 +43,10 @@ NewtonSettings read_settings(const SolverOptions& options)
                              "'; valid options: linear_solver, armijo, max_backtracks");
     }
     if (!(s.armijo > 0.0 && s.armijo < 0.5))
-        throw InputError("projected-newton option armijo must lie in (0, 0.5)");
+        throw InputError("projected-newton option armijo = " + format_number(s.armijo) + " must lie in (0, 0.5)");
     if (s.max_backtracks < 1)
-        throw InputError("projected-newton option max_backtracks must be at least 1");
+        throw InputError("projected-newton option max_backtracks = " + std::to_string(s.max_backtracks) +
+                         " must be at least 1");
     make_linear_solver(s.linear_solver);  // InputError naming the valid solvers
     return s;
 }
@@ -66,6 +68,8 @@ public:
                    "; eliminate Dirichlet conditions, or use ipopt)";
         return std::nullopt;
     }
+
+    void check_options(const SolverOptions& options) const override { read_settings(options); }
 
     Result run(Nlp& nlp, const SolverOptions& options) const override
     {

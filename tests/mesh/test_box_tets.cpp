@@ -81,5 +81,12 @@ TEST_CASE("box_tets: bad arguments are InputError", "[mesh][generators][bad_inpu
                         {"box_tets: lower z = 0 must be below upper z = 0"});
     require_input_error(
         [] { box_tets(Eigen::Vector3d(0, std::nan(""), 0), Eigen::Vector3d::Ones(), 1, 1, 1); },
-        {"box_tets: lower y = nan"});
+        {"box_tets: y extent: nan is not a number"});
+    // Finite but beyond the coordinate limit: derived sums and volumes would
+    // overflow (a box of upper 1e308 crashed the assembly schedule).
+    require_input_error([] { box_tets(Eigen::Vector3d::Zero(), Eigen::Vector3d(1e308, 1, 1), 1, 1, 1); },
+                        {"box_tets: x extent: 1e+308 is not a number within ±1e+100"});
+    // Cells too thin for the coordinates to tell their nodes apart.
+    require_input_error([] { box_tets(Eigen::Vector3d(1e6, 0, 0), Eigen::Vector3d(1e6 + 1e-9, 1, 1), 4, 1, 1); },
+                        {"box_tets: x: cells of width", "too thin"});
 }

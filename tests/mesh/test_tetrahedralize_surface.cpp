@@ -8,7 +8,12 @@
 #include <Eigen/Geometry>
 #include <catch2/catch.hpp>
 
+#include <csignal>
+#include <filesystem>
+#include <fstream>
 #include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
 
 using namespace sinew;
 using sinew::test::boundary_facets;
@@ -142,4 +147,75 @@ TEST_CASE("tetrahedralize: open, self-intersecting or wrong input is InputError 
     Mesh flat;
     flat.kind = ElementKind::triangle_2d;
     require_input_error([&] { tetrahedralize_surface(flat, "flat", {}); }, {"flat: ", "triangle surface in 3D"});
+}
+
+namespace {
+
+/// The parent's process id from /proc/<pid>/stat (field 4, after the
+/// parenthesized command name), or -1 when the process is gone.
+int parent_of(int pid)
+{
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string text((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
+    const auto close = text.rfind(')');
+    if (close == std::string::npos)
+        return -1;
+    std::istringstream fields(text.substr(close + 1));
+    char state = 0;
+    int parent = -1;
+    fields >> state >> parent;
+    return state == 'Z' ? -1 : parent;
+}
+
+/// A live child process of `pid`, or -1 when it has none.
+int child_of(int pid)
+{
+    for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
+        const std::string name = entry.path().filename().string();
+        if (name.find_first_not_of("0123456789") == std::string::npos && parent_of(std::stoi(name)) == pid)
+            return std::stoi(name);
+    }
+    return -1;
+}
+
+/// Waits up to 20 s for `done`, polling every 10 ms.
+template <typename Condition>
+bool wait_for(const Condition& done)
+{
+    for (int i = 0; i < 2000; ++i) {
+        if (done())
+            return true;
+        ::usleep(10000);
+    }
+    return done();
+}
+
+} // namespace
+
+TEST_CASE("TetGen's process dies with the process that started it", "[mesh][tetgen]")
+{
+    // A user who kills sinew during a long TetGen run must not be left with
+    // TetGen running on: a cube meshed into about 3 million tets takes TetGen
+    // many seconds; the process that asked for it is killed after TetGen started.
+    ScratchDirectory dir;
+    const std::string path = dir.write("cube.obj", box_obj(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()));
+    const pid_t asker = ::fork();
+    REQUIRE(asker >= 0);
+    if (asker == 0) {
+        TetrahedralizeOptions options;
+        options.max_volume = 3e-7;
+        try {
+            tetrahedralize_obj(path, options);
+        } catch (...) {
+        }
+        ::_exit(0);
+    }
+    int tetgen = -1;
+    const bool started = wait_for([&] { return (tetgen = child_of(asker)) > 0; });
+    ::kill(asker, SIGKILL);
+    int status = 0;
+    ::waitpid(asker, &status, 0);
+    REQUIRE(started);
+    CAPTURE(tetgen);
+    CHECK(wait_for([&] { return parent_of(tetgen) < 0; }));
 }

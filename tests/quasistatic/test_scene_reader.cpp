@@ -185,7 +185,7 @@ TEST_CASE("bad scene input gives one InputError naming the document and the JSON
         Case{replaced(good, "\"mu\": 1e4", "\"nu\": 0.3"), "materials[0]:"},
         Case{replaced(good, "\"density\": 1000", "\"density\": -1"), "materials[0].density: must lie in"},
         Case{replaced(good, "\"density\": 1000", "\"group\": \"bone\""), "materials[0].group: the mesh has no group 'bone'"},
-        Case{replaced(good, "\"density\": 1000", "\"fiber\": [0, 0, 0]"), "materials: elastic potential: element 0: fiber is zero"},
+        Case{replaced(good, "\"density\": 1000", "\"fiber\": [0, 0, 0]"), "materials[0].fiber: elastic potential: element 0: fiber is zero"},
         Case{replaced(good, "\"density\": 1000", "\"fiber\": {\"per_element\": [[1, 0, 0]]}"),
              "materials[0].fiber.per_element: has 1 fibers, group 'default' more elements"},
         Case{replaced(good, "\"density\": 1000", "\"fiber\": \"along x\""), "materials[0].fiber: expected an array"},
@@ -210,7 +210,24 @@ TEST_CASE("bad scene input gives one InputError naming the document and the JSON
         Case{beam_scene(",\n  \"output\": {\"vtu\": \"sometimes\"}"), "output.vtu: unknown value 'sometimes'"},
         Case{beam_scene(",\n  \"loads\": [{\"select\": {\"all\": true}}]"), "loads[0]: give exactly one of force_per_node"},
         Case{beam_scene(",\n  \"obstacles\": [{\"plane\": {\"point\": [0, 0, 0], \"normal\": [0, 0, 1]}, \"stiffness\": -1}]"),
-             "obstacles[0]:"});
+             "obstacles[0]:"},
+        // Issue 11: each of these was accepted, crashed, or named the wrong place.
+        Case{replaced(good, "\"density\": 1000", "\"density\": 1000, \"density\": 2000"),
+             "materials[0].density: key 'density' appears twice in the object"},
+        Case{replaced(good, "\"density\": 1000", "\"fiber\": \"mesh\""),
+             "materials[0].fiber: the mesh has no fiber field"},
+        Case{replaced(good, "\"upper\": [1, 0.5, 0.5]", "\"upper\": [1e308, 0.5, 0.5]"),
+             "mesh.upper[0]: must lie in [-1e+100, 1e+100], got 1e308"},
+        Case{replaced(good, "\"density\": 1000", "\"activation\": 1.7976931348623157e308"),
+             "materials[0].activation: must lie in [0, 1], got 1.7976931348623157e308"},
+        Case{replaced(good, "\"density\": 1000", "\"activation\": -4.9e-324"),
+             "materials[0].activation: must lie in [0, 1], got -4.9e-324"},
+        Case{replaced(good, "\"translation\": [0.2, 0, 0]", "\"map\": [[1, 0, 0], [0, 1, 0], [0, 0, 0]]"),
+             "boundary[1].map: the map has the real eigenvalue 0 <= 0"},
+        Case{replaced(good, "\"translation\": [0.2, 0, 0]", "\"map\": [[-1, 0, 0], [0, 1, 0], [0, 0, 1]]"),
+             "boundary[1].map: the map has the real eigenvalue -1 <= 0"},
+        Case{replaced(good, "\"translation\": [0.2, 0, 0]", "\"rotation\": {\"angle_deg\": 1e308, \"axis\": [1, 0, 0]}"),
+             "boundary[1].rotation.angle_deg: must lie in [-36000, 36000], got 1e308"});
     CAPTURE(c.text);
     const std::string message = error_of(c.text);
     CAPTURE(message);
@@ -232,4 +249,18 @@ TEST_CASE("a mesh file that does not exist is an error naming the path")
     }();
     CHECK_THAT(message, Catch::Contains("test.json: mesh.file:"));
     CHECK_THAT(message, Catch::Contains("/tmp/scene_folder/no_such_mesh.msh"));
+}
+
+TEST_CASE("numbers in a scene are taken as written: subnormal parameters, the user's spelling in messages")
+{
+    // A parameter is passed to the model catalog as the text the user wrote,
+    // so its range error quotes that text (4.9e-324, not 4.9406564584124654e-324).
+    const std::string subnormal_mu = replaced(beam_scene(), "\"mu\": 1e4", "\"mu\": -4.9e-324");
+    CHECK_THAT(error_of(subnormal_mu), Catch::Contains("parameter mu = -4.9e-324 is out of range"));
+    CHECK_THAT(error_of(subnormal_mu), !Catch::Contains("4.94"));
+    // A positive subnormal density is a valid (if odd) number, not an error.
+    CHECK(error_of(replaced(beam_scene(), "\"density\": 1000", "\"density\": 4.9e-324")).empty());
+    // A rotation whose eigenvalues are complex never passes through a singular map.
+    CHECK(error_of(replaced(beam_scene(), "\"translation\": [0.2, 0, 0]",
+                            "\"map\": [[1, 0, 0], [0, 0, -1], [0, 1, 0]]")).empty());
 }

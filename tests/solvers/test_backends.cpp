@@ -159,3 +159,22 @@ TEST_CASE("multipliers estimated for NLopt agree with Ipopt's")
     CHECK((ipopt.constraint_multipliers - slsqp.constraint_multipliers).cwiseAbs().maxCoeff() < 1e-3);
     CHECK((ipopt.bound_multipliers_lower - slsqp.bound_multipliers_lower).cwiseAbs().maxCoeff() < 1e-3);
 }
+
+TEST_CASE("a backend's success stop far from a solution is failed, not tolerance_not_met")
+{
+    // Ipopt told to accept any point after one iteration: it reports
+    // Solved_To_Acceptable_Level (a success) at an iterate of hs071 that is
+    // far from feasible. Before, that was tolerance_not_met, the status for
+    // "the backend's success test passed" near a solution.
+    SolverOptions options;
+    for (const char* name : {"acceptable_tol", "acceptable_constr_viol_tol", "acceptable_dual_inf_tol",
+                             "acceptable_compl_inf_tol"})
+        options.backend[name] = "1e20";
+    options.backend["acceptable_iter"] = "1";
+    const Result far = solve_builtin("hs071", "ipopt", options);
+    CAPTURE(far.message, far.constraint_violation, far.kkt_residual, far.iterations);
+    REQUIRE(far.constraint_violation > kFarFromTolerance * options.constraint_tolerance);
+    CHECK(far.status == Status::failed);
+    CHECK(far.message.find("Ipopt: solved to acceptable level") != std::string::npos);
+    CHECK(far.message.find("more than 1000 times the tolerance") != std::string::npos);
+}
