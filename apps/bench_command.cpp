@@ -112,21 +112,29 @@ bool run_problems(const BenchFlags& flags, const SolverOptions& options, nlohman
     return all_good;
 }
 
-/// Throughput of every constitutive model, as a markdown table.
-void run_kernels(const BenchFlags& flags, nlohmann::json& kernels)
+/// Throughput of every constitutive model, as a markdown table; false when a
+/// model's output was not finite (its time is not a throughput then).
+bool run_kernels(const BenchFlags& flags, nlohmann::json& kernels)
 {
     std::cout << "\n| model | F | evaluations | time (s) | evaluations/s (psi + P + projected dP/dF, one core) |\n"
               << "|---|---|---:|---:|---:|\n";
+    bool all_finite = true;
     for (const KernelRun& run : run_kernel_benchmarks(flags.kernel_evaluations, 2026)) {
+        const bool finite = std::isfinite(run.checksum);
+        all_finite = all_finite && finite;
         std::cout << "| " << run.model << " | " << run.shape << " | " << run.evaluations << " | "
-                  << format("%.3f", run.time_s) << " | " << format("%.3g", run.evaluations_per_second) << " |"
+                  << format("%.3f", run.time_s) << " | "
+                  << (finite ? format("%.3g", run.evaluations_per_second) : "FAILED: non-finite output") << " |"
                   << std::endl;
         kernels.push_back({{"model", run.model},
                            {"shape", run.shape},
                            {"evaluations", run.evaluations},
                            {"time_s", number(run.time_s)},
-                           {"evaluations_per_second", number(run.evaluations_per_second)}});
+                           {"evaluations_per_second", number(run.evaluations_per_second)},
+                           {"checksum", number(run.checksum)},
+                           {"finite", finite}});
     }
+    return all_finite;
 }
 
 } // namespace
@@ -183,7 +191,7 @@ void add_bench_command(CLI::App& app, int& exit_code)
             all_good = run_problems(*flags, options, runs);
         const bool filtered = !flags->solvers.empty() || !flags->problems.empty();
         if (kernels_only || (flags->suite == "all" && !filtered))
-            run_kernels(*flags, kernels);
+            all_good = run_kernels(*flags, kernels) && all_good;
         if (!flags->json.empty())
             write_text_file(flags->json,
                             nlohmann::json{{"suite", flags->suite}, {"runs", runs}, {"kernels", kernels}}.dump(2) +

@@ -14,8 +14,9 @@ struct KernelRun {
     long evaluations = 0;
     double time_s = 0.0;
     double evaluations_per_second = 0.0;
-    /// Sum of ψ and of the traces of P and ∂P/∂F: keeps the compiler from
-    /// dropping the work, and shows the inputs were finite.
+    /// Sum of ψ and of every entry of P and ∂P/∂F: keeps the compiler from
+    /// dropping the work, and is not finite when any output was not; `sinew
+    /// bench` then reports the model as failed instead of timing it.
     double checksum = 0.0;
 };
 

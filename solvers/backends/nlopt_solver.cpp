@@ -370,10 +370,9 @@ public:
             result.message += "; evaluation failed: " + bridge.error();
         // NLopt returns the lowest f among the points within its constraint
         // tolerance, which after convergence is often a slightly infeasible
-        // early point below f* (circle projection: violation 2.4e-7 and KKT
-        // residual 1.2e-4 where the final iterate has 1e-11; hs100: f = 690.6,
-        // 1.5% above f*, when the tolerance is tightened). On a successful
-        // stop the answer is the final iterate; otherwise NLopt's best point.
+        // early point below f* (measured in docs/solvers.md, "NLopt"). On a
+        // successful stop the answer is the final iterate; otherwise NLopt's
+        // best point.
         if (result.status == Status::converged && bridge.last_iterate().size() == n)
             result.x = bridge.last_iterate();
         else

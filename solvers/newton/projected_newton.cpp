@@ -137,10 +137,9 @@ public:
             // made it positive definite last time; the PSD projection the
             // problem offers (seed 000 §5.6) otherwise, and always at the
             // start. Per-element projection alone stiffens H where element
-            // terms of opposite sign cancel in the sum: on the cantilever it
-            // converges linearly (rate 0.68), on the muscle spindle it takes
-            // 61 iterations with full steps of 5e-5 m. The exact Hessian
-            // alone overshoots far from the solution (the QR plate).
+            // terms of opposite sign cancel in the sum, and then converges
+            // only linearly; the exact Hessian alone overshoots far from the
+            // solution (measurements in docs/solvers.md, "Projected Newton").
             const bool exact = !projected || trust_exact;
             timed = Clock::now();
             if (exact)
@@ -202,7 +201,7 @@ public:
             // whose out-of-plane stiffness is negative while ∇f has no
             // out-of-plane part. The shifted step then converges only linearly,
             // at the rate shift/(λ + shift) of H's small positive eigenvalues λ
-            // (66 iterations on the codim sheet). The projected H's step does not
+            // (the codim sheet, docs/solvers.md). The projected H's step does not
             // see the negative directions; of the two full steps, the one with
             // the lower f is taken.
             if (exact && projected && shift > 0.0 && near_solution) {
