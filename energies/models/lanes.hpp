@@ -124,20 +124,20 @@ void unpack_lanes_to(const Lanes<W>* values, int count, double* const* destinati
         for (int r = 0; r < W; ++r)
             rows[r] = values[j + r].v;
         Vector columns[W];  // columns[k][r] = rows[r][k]
+        // __builtin_shufflevector (GCC 12 and Clang): constant lane indices
+        // into the concatenation of its two arguments.
         if constexpr (W == 4) {
-            using Index = MaskVector<4>;
-            const Vector t0 = __builtin_shuffle(rows[0], rows[1], Index{0, 4, 2, 6});
-            const Vector t1 = __builtin_shuffle(rows[0], rows[1], Index{1, 5, 3, 7});
-            const Vector t2 = __builtin_shuffle(rows[2], rows[3], Index{0, 4, 2, 6});
-            const Vector t3 = __builtin_shuffle(rows[2], rows[3], Index{1, 5, 3, 7});
-            columns[0] = __builtin_shuffle(t0, t2, Index{0, 1, 4, 5});
-            columns[1] = __builtin_shuffle(t1, t3, Index{0, 1, 4, 5});
-            columns[2] = __builtin_shuffle(t0, t2, Index{2, 3, 6, 7});
-            columns[3] = __builtin_shuffle(t1, t3, Index{2, 3, 6, 7});
+            const Vector t0 = __builtin_shufflevector(rows[0], rows[1], 0, 4, 2, 6);
+            const Vector t1 = __builtin_shufflevector(rows[0], rows[1], 1, 5, 3, 7);
+            const Vector t2 = __builtin_shufflevector(rows[2], rows[3], 0, 4, 2, 6);
+            const Vector t3 = __builtin_shufflevector(rows[2], rows[3], 1, 5, 3, 7);
+            columns[0] = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
+            columns[1] = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
+            columns[2] = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
+            columns[3] = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
         } else if constexpr (W == 2) {
-            using Index = MaskVector<2>;
-            columns[0] = __builtin_shuffle(rows[0], rows[1], Index{0, 2});
-            columns[1] = __builtin_shuffle(rows[0], rows[1], Index{1, 3});
+            columns[0] = __builtin_shufflevector(rows[0], rows[1], 0, 2);
+            columns[1] = __builtin_shufflevector(rows[0], rows[1], 1, 3);
         } else {
             for (int k = 0; k < W; ++k)
                 for (int r = 0; r < W; ++r)

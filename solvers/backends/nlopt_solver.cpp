@@ -248,9 +248,10 @@ NloptSettings read_settings(const std::string& solver, const SolverOptions& opti
         const std::string what = solver + " option " + key;
         // Every setting is a tolerance, a time or a count: 0 turns it off,
         // a negative value is a mistake (NLopt itself would take it silently).
+        const std::string& text = value;  // a structured binding; lambdas capture it by name from C++20 on
         const auto non_negative = [&](double number) {
             if (number < 0.0)
-                throw InputError(what + " = " + value + " is invalid; it must be at least 0 (0: off)");
+                throw InputError(what + " = " + text + " is invalid; it must be at least 0 (0: off)");
             return number;
         };
         if (key == "ftol_rel")
