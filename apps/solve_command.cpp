@@ -79,7 +79,6 @@ void add_solve_command(CLI::App& app, int& exit_code)
             if (command->count("--load-steps") > 0)
                 throw InputError("--load-steps applies to scenes only ('" + flags->problem + "' is not one)");
             const std::unique_ptr<Nlp> nlp = builtin->make();
-            check_solve(*nlp, flags->solver, options);
             const Result result = solve(*nlp, flags->solver, options);
             if (!flags->json.empty())
                 write_text_file(flags->json, to_json(result).dump(2) + "\n");
@@ -95,11 +94,11 @@ void add_solve_command(CLI::App& app, int& exit_code)
             options.tolerance = *scene.solver.tolerance;
         if (scene.solver.max_iterations && command->count("--max-iter") == 0)
             options.max_iterations = *scene.solver.max_iterations;
-        if (settings.solver == scene.solver.name)
+        if (settings.solver == scene.solver.name) {
+            check_scene_solver(scene, options);
             for (const auto& [key, value] : scene.solver.options)
                 options.backend.emplace(key, value);  // --option key=value wins
-        if (settings.solver == scene.solver.name)
-            check_scene_solver(scene, options);
+        }
         settings.options = options;
         settings.load_steps = command->count("--load-steps") > 0 ? flags->load_steps : scene.load_steps;
         settings.folder = !flags->output.empty()          ? flags->output
