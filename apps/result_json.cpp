@@ -31,6 +31,7 @@ nlohmann::json to_json(const Result& result)
                            {"dual_residual", number(row.dual_residual)},
                            {"step_norm", number(row.step_norm)},
                            {"step_length", number(row.step_length)},
+                           {"outer_iteration", row.outer_iteration},
                            {"time_s", number(row.time_s)}});
     return {{"problem", result.problem},
             {"solver", result.solver},

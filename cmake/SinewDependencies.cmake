@@ -5,6 +5,15 @@ pkg_check_modules(Ipopt REQUIRED IMPORTED_TARGET ipopt)
 # NLopt ships a C and a C++ config that both define package NLopt: pin the C++ one.
 find_package(NLopt 2.7 CONFIG REQUIRED HINTS /usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake/nlopt_cxx)
 find_package(SuiteSparse 5 REQUIRED)
+# MUMPS 5.5, sequential (libmumps-seq-dev, pulled in by Ipopt's dev package,
+# whose libipopt links the same libdmumps_seq): the KKT solvers' LDLᵀ with inertia.
+find_path(MUMPS_INCLUDE_DIR dmumps_c.h REQUIRED)
+find_library(MUMPS_LIBRARY dmumps_seq REQUIRED)
+find_library(MUMPS_COMMON_LIBRARY mumps_common_seq REQUIRED)
+add_library(MUMPS::dmumps_seq UNKNOWN IMPORTED)
+set_target_properties(MUMPS::dmumps_seq PROPERTIES IMPORTED_LOCATION "${MUMPS_LIBRARY}"
+  INTERFACE_INCLUDE_DIRECTORIES "${MUMPS_INCLUDE_DIR}" INTERFACE_LINK_LIBRARIES "${MUMPS_COMMON_LIBRARY}")
+
 # TetGen 1.5 (libtet1.5-dev): no pkg-config or CMake config in Debian.
 find_path(TETGEN_INCLUDE_DIR tetgen.h REQUIRED)
 find_library(TETGEN_LIBRARY tet REQUIRED)

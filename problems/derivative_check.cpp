@@ -5,7 +5,9 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <random>
 #include <sstream>
@@ -64,6 +66,21 @@ std::string find_pattern_problem(const char* what, const SparsityPattern& patter
     return {};
 }
 
+/// "448 MB": three significant digits, decimal units.
+std::string format_bytes(std::uint64_t bytes)
+{
+    const char* units[] = {"bytes", "kB", "MB", "GB", "TB", "PB"};
+    double value = static_cast<double>(bytes);
+    int unit = 0;
+    while (value >= 1000.0 && unit < 5) {
+        value /= 1000.0;
+        ++unit;
+    }
+    std::ostringstream out;
+    out << std::setprecision(3) << value << " " << units[unit];
+    return out.str();
+}
+
 /// Dense matrix from a triplet pattern and its values; duplicates add up.
 Eigen::MatrixXd densify(const SparsityPattern& pattern, const Eigen::VectorXd& values, int rows, int cols)
 {
@@ -111,6 +128,42 @@ std::string describe(const char* what, const DerivativeDiscrepancy& d, bool two_
 
 } // namespace
 
+std::uint64_t dense_check_bytes(int n, int m)
+{
+    const auto N = static_cast<std::uint64_t>(std::max(n, 0));
+    const auto M = static_cast<std::uint64_t>(std::max(m, 0));
+    const std::uint64_t matrices = (2 * N * N + M * N) * sizeof(double);
+    const std::uint64_t entries = (N * (N + 1) / 2 + M * N + N) * sizeof(Entry);
+    return matrices + entries;
+}
+
+std::string dense_check_refusal(const Nlp& nlp)
+{
+    const int n = nlp.num_variables();
+    const int m = nlp.num_constraints();
+    const std::uint64_t bytes = dense_check_bytes(n, m);
+    if (n <= kMaxCheckedVariables && bytes <= kMaxDenseCheckBytes)
+        return {};
+    const bool too_many = n > kMaxCheckedVariables, too_large = bytes > kMaxDenseCheckBytes;
+    const std::string variables = std::to_string(kMaxCheckedVariables) + " variables";
+    const std::string memory = format_bytes(kMaxDenseCheckBytes);
+    const std::string limits = too_many && too_large ? "limits of " + variables + " and " + memory
+                               : too_many            ? "limit of " + variables
+                                                     : "limit of " + memory;
+    return "the entrywise derivative check of " + nlp.name() + " is dense: with n = " + std::to_string(n) +
+           " variables and m = " + std::to_string(m) + " constraints it would hold " + format_bytes(bytes) +
+           " (two n x n and one m x n matrices of doubles plus the compared entries), over its " + limits +
+           "; the Taylor test (taylor_test.hpp) is sparse and has no such limit";
+}
+
+std::string find_pattern_problem(const Nlp& nlp)
+{
+    const int n = nlp.num_variables();
+    const std::string jacobian =
+        find_pattern_problem("jacobian", nlp.jacobian_pattern(), nlp.num_constraints(), n, false);
+    return jacobian.empty() ? find_pattern_problem("hessian", nlp.hessian_pattern(), n, n, true) : jacobian;
+}
+
 bool DerivativeCheckReport::passed(double tolerance) const
 {
     if (!pattern_problem.empty())
@@ -131,10 +184,8 @@ DerivativeCheckReport check_derivatives(Nlp& nlp, Nlp::ConstVectorRef x_in, cons
 {
     const int n = nlp.num_variables();
     const int m = nlp.num_constraints();
-    if (n > kMaxCheckedVariables)
-        throw InputError("derivative check of " + nlp.name() + ": " + std::to_string(n) +
-                         " variables; the check compares dense n x n matrices and takes at most " +
-                         std::to_string(kMaxCheckedVariables));
+    if (const std::string refusal = dense_check_refusal(nlp); !refusal.empty())
+        throw InputError(refusal);
     if (!(options.step > 0.0 && std::isfinite(options.step)))
         throw InputError("derivative check: step = " + format_number(options.step) +
                          " is invalid; it must be a positive finite number");
@@ -151,9 +202,7 @@ DerivativeCheckReport check_derivatives(Nlp& nlp, Nlp::ConstVectorRef x_in, cons
     for (int i = 0; i < m; ++i)
         lambda[i] = uniform(rng);
 
-    report.pattern_problem = find_pattern_problem("jacobian", nlp.jacobian_pattern(), m, n, false);
-    if (report.pattern_problem.empty())
-        report.pattern_problem = find_pattern_problem("hessian", nlp.hessian_pattern(), n, n, true);
+    report.pattern_problem = find_pattern_problem(nlp);
     if (!report.pattern_problem.empty())
         return report;
 
@@ -166,7 +215,7 @@ DerivativeCheckReport check_derivatives(Nlp& nlp, Nlp::ConstVectorRef x_in, cons
         jacobian = densify(nlp.jacobian_pattern(), values, m, n);
     }
     Eigen::VectorXd hessian_values(nlp.hessian_pattern().nonzeros());
-    nlp.hessian_values(x, options.sigma, lambda, hessian_values);
+    nlp.hessian(x, options.sigma, lambda, Projection::none, hessian_values);
     const Eigen::MatrixXd hessian = densify(nlp.hessian_pattern(), hessian_values, n, n);
 
     // Central differences along each coordinate: f gives ∇f, c gives column j
@@ -174,6 +223,9 @@ DerivativeCheckReport check_derivatives(Nlp& nlp, Nlp::ConstVectorRef x_in, cons
     Eigen::MatrixXd hessian_fd(n, n);
     Eigen::VectorXd c_plus(m), c_minus(m);
     std::vector<Entry> gradient_entries, jacobian_entries, hessian_entries;
+    gradient_entries.reserve(n);  // as dense_check_bytes() counts them
+    jacobian_entries.reserve(static_cast<std::size_t>(m) * n);
+    hessian_entries.reserve(static_cast<std::size_t>(n) * (n + 1) / 2);
     for (int j = 0; j < n; ++j) {
         const double h = options.step * std::max(1.0, std::abs(x[j]));
         Eigen::VectorXd xp = x, xm = x;

@@ -1,6 +1,7 @@
 #pragma once
 #include "sinew/problems/nlp.hpp"
 
+#include <cstdint>
 #include <string>
 
 namespace sinew {
@@ -9,8 +10,25 @@ namespace sinew {
 /// compared against that fraction of it instead of their own size (docs/solvers.md).
 inline constexpr double kRelativeErrorFloor = 1e-3;
 /// The check is dense in n: it refuses problems with more variables than this
-/// (a 4000 x 4000 matrix of doubles is 128 MB).
+/// (a 4000 x 4000 matrix of doubles is 128 MB) ...
 inline constexpr int kMaxCheckedVariables = 4000;
+/// ... or whose dense check would hold more than this many bytes
+/// (dense_check_bytes(); 1 GiB, 448 MB for n = 4000 and m = 0).
+inline constexpr std::uint64_t kMaxDenseCheckBytes = std::uint64_t{1} << 30;
+
+/// Bytes check_derivatives() holds for n variables and m constraints: ∇²L and
+/// its differenced twin (two n × n matrices of doubles), J (m × n doubles) and
+/// one 24-byte record per compared entry (n(n+1)/2 + m·n + n of them).
+std::uint64_t dense_check_bytes(int n, int m);
+
+/// Empty when check_derivatives() takes `nlp`; otherwise one line saying why
+/// not, naming n, m and the bytes the dense check would need.
+std::string dense_check_refusal(const Nlp& nlp);
+
+/// Empty when every entry of both sparsity patterns lies inside its matrix
+/// (and, for the Hessian, in the lower triangle); otherwise names the first
+/// entry that does not. Shared by check_derivatives() and taylor_test().
+std::string find_pattern_problem(const Nlp& nlp);
 
 /// The worst disagreement found in one derivative (gradient, Jacobian or
 /// Hessian) between the analytic values and central finite differences.
@@ -46,8 +64,10 @@ struct DerivativeCheckOptions {
 };
 
 /// Compares gradient, Jacobian and Hessian of the Lagrangian (with random λ)
-/// at x against central differences of f, c and ∇L. Dense in n: InputError for
-/// more than kMaxCheckedVariables variables.
+/// at x against central differences of f, c and ∇L. Dense in n: InputError
+/// with dense_check_refusal()'s message for a problem it does not take (more
+/// than kMaxCheckedVariables variables or kMaxDenseCheckBytes of memory); the
+/// Taylor test (taylor_test.hpp) is sparse and checks such problems.
 DerivativeCheckReport check_derivatives(Nlp& nlp, Nlp::ConstVectorRef x,
                                         const DerivativeCheckOptions& options = {});
 

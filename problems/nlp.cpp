@@ -21,14 +21,26 @@ const SparsityPattern& Nlp::jacobian_pattern() const { return empty_pattern_; }
 
 void Nlp::jacobian_values(ConstVectorRef, VectorRef) {}
 
-void Nlp::projected_hessian_values(ConstVectorRef, VectorRef)
+void Nlp::hessian(ConstVectorRef x, double sigma, ConstVectorRef lambda, Projection projection, VectorRef values)
+{
+    if (!supports(projection))
+        throw std::logic_error(name() + " does not support Hessian projection " + to_string(projection));
+    if (projection == Projection::none)
+        hessian_values(x, sigma, lambda, values);
+    else
+        projected_hessian_values(x, sigma, lambda, values);
+}
+
+void Nlp::projected_hessian_values(ConstVectorRef, double, ConstVectorRef, VectorRef)
 {
     throw std::logic_error(name() + " offers no projected Hessian");
 }
 
-NlpKind classify(const Nlp& nlp)
+NlpCapabilities capabilities_of(const Nlp& nlp)
 {
-    NlpKind kind;
+    NlpCapabilities kind;
+    kind.exact_hessian = nlp.exact_hessian();
+    kind.projected_hessian = nlp.supports(Projection::clamp);
     const int n = nlp.num_variables();
     const int m = nlp.num_constraints();
     Eigen::VectorXd xl(n), xu(n), gl(m), gu(m);
@@ -48,7 +60,7 @@ NlpKind classify(const Nlp& nlp)
     return kind;
 }
 
-std::string NlpKind::describe() const
+std::string NlpCapabilities::describe() const
 {
     if (unconstrained())
         return "unconstrained";

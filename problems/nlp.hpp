@@ -1,4 +1,6 @@
 #pragma once
+#include "sinew/core/projection.hpp"
+
 #include <Eigen/Core>
 
 #include <limits>
@@ -67,31 +69,43 @@ public:
 
     /// Pattern of the lower triangle of ∇²L (n × n, row >= col).
     virtual const SparsityPattern& hessian_pattern() const = 0;
-    virtual void hessian_values(ConstVectorRef x, double sigma, ConstVectorRef lambda, VectorRef values) = 0;
 
-    /// Whether projected_hessian_values is offered: ∇²f with every term of f
-    /// (each element's ∂P/∂F, say) projected onto the PSD cone, so that the
-    /// sum is PSD. Projected Newton uses it; problems without it get none.
-    virtual bool has_projected_hessian() const { return false; }
-    /// Values in hessian_pattern()'s order (lower triangle), σ = 1 and no
-    /// constraint terms. Throws std::logic_error where not offered.
-    virtual void projected_hessian_values(ConstVectorRef x, VectorRef values);
+    /// The Hessian of the Lagrangian σ∇²f + Σᵢ λᵢ∇²cᵢ at x, lower triangle in
+    /// hessian_pattern()'s order. With Projection::clamp every term (each
+    /// element's ∂P/∂F, each constraint's λᵢ∇²cᵢ) is projected onto the PSD
+    /// cone before the sum (seed 000 §5.6), so that σ ≥ 0 gives a PSD sum.
+    /// std::logic_error for a projection the problem does not support().
+    void hessian(ConstVectorRef x, double sigma, ConstVectorRef lambda, Projection projection, VectorRef values);
+    /// Whether hessian() takes `projection` (every problem takes none).
+    virtual bool supports(Projection projection) const { return projection == Projection::none; }
+    /// False when hessian() is an approximation (Gauss-Newton, say): Ipopt
+    /// then uses its limited-memory quasi-Newton mode instead.
+    virtual bool exact_hessian() const { return true; }
+
+protected:
+    /// hessian() with Projection::none.
+    virtual void hessian_values(ConstVectorRef x, double sigma, ConstVectorRef lambda, VectorRef values) = 0;
+    /// hessian() with Projection::clamp, for problems that support() it.
+    virtual void projected_hessian_values(ConstVectorRef x, double sigma, ConstVectorRef lambda, VectorRef values);
 
 private:
     SparsityPattern empty_pattern_;
 };
 
-/// What a problem has, so that a solver can refuse what it cannot handle.
-struct NlpKind {
+/// What a problem has and offers, so that a solver can refuse what it cannot
+/// handle: every solver's refusal reads this one type.
+struct NlpCapabilities {
     bool has_bounds = false;        ///< some finite x_L or x_U
     bool has_equalities = false;    ///< some g_L = g_U
     bool has_inequalities = false;  ///< some g_L < g_U
     int num_equalities = 0;
     int num_inequalities = 0;
+    bool exact_hessian = true;           ///< Nlp::exact_hessian()
+    bool projected_hessian = false;      ///< Nlp::supports(Projection::clamp)
     bool unconstrained() const { return !has_bounds && !has_equalities && !has_inequalities; }
     std::string describe() const;   ///< e.g. "bounds, 1 equality, 1 inequality"
 };
-NlpKind classify(const Nlp& nlp);
+NlpCapabilities capabilities_of(const Nlp& nlp);
 
 /// Largest violation of bounds and constraints at x (0 when feasible).
 double max_constraint_violation(Nlp& nlp, Nlp::ConstVectorRef x);

@@ -38,6 +38,7 @@ struct HistoryRow {
     double step_norm = 0.0;      ///< ‖Δx‖∞ of the step that led here
     double step_length = 0.0;    ///< line-search fraction α of that step
     double time_s = 0.0;         ///< wall time since the solve started
+    int outer_iteration = 0;     ///< the outer loop's iteration (penalty continuation, multiplier update)
 };
 
 /// The result every solver returns.

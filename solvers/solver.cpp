@@ -4,6 +4,9 @@
 #include "sinew/core/input_error.hpp"
 #include "sinew/solvers/backends/ipopt_solver.hpp"
 #include "sinew/solvers/backends/nlopt_solver.hpp"
+#include "sinew/solvers/constrained/kkt_newton.hpp"
+#include "sinew/solvers/constrained/penalty_method.hpp"
+#include "sinew/solvers/constrained/relaxed_kkt.hpp"
 #include "sinew/solvers/kkt_measures.hpp"
 #include "sinew/solvers/newton/projected_newton.hpp"
 #include "sinew/solvers/progress_log.hpp"
@@ -40,6 +43,10 @@ const std::vector<std::unique_ptr<Solver>>& all_solvers()
         for (auto& s : make_nlopt_solvers())
             all.push_back(std::move(s));
         all.push_back(make_projected_newton_solver());
+        all.push_back(make_kkt_newton_solver());
+        all.push_back(make_relaxed_kkt_solver());
+        all.push_back(make_penalty_solver());
+        all.push_back(make_augmented_lagrangian_solver());
         return all;
     }();
     return solvers;
@@ -116,7 +123,7 @@ void check_solve(const Nlp& nlp, const std::string& solver_name, const SolverOpt
     const Solver& solver = find_solver(solver_name);
     solver.check_options(options);
     if (const auto why = solver.refusal(nlp))
-        throw InputError("solver " + solver.name() + " cannot solve " + nlp.name() + " (" + classify(nlp).describe() +
+        throw InputError("solver " + solver.name() + " cannot solve " + nlp.name() + " (" + capabilities_of(nlp).describe() +
                          "): " + *why);
 }
 

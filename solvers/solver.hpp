@@ -1,5 +1,6 @@
 #pragma once
 #include "sinew/problems/nlp.hpp"
+#include "sinew/solvers/declared_options.hpp"
 #include "sinew/solvers/result.hpp"
 #include "sinew/solvers/solver_options.hpp"
 
@@ -16,6 +17,9 @@ public:
     virtual ~Solver() = default;
     virtual std::string name() const = 0;
     virtual std::string description() const = 0;
+    /// The backend options this solver declares (DESIGN.md, "Options"); empty
+    /// for backends that take their own options by name (Ipopt, NLopt).
+    virtual std::vector<OptionDeclaration> declared_options() const { return {}; }
     /// Why this solver cannot handle `nlp` (e.g. "LBFGS does not take
     /// constraints"), or nothing when it can.
     virtual std::optional<std::string> refusal(const Nlp& nlp) const = 0;

@@ -1,15 +1,10 @@
 #pragma once
+#include "sinew/core/projection.hpp"
 #include <Eigen/Core>
 
 #include <string>
 
 namespace sinew {
-
-/// PSD projection of ∂P/∂F, chosen per call and never applied silently.
-enum class Projection {
-    none,   ///< the exact ∂P/∂F (what Ipopt and derivative tests want)
-    clamp,  ///< negative eigenvalues clamped to zero (what projected Newton wants)
-};
 
 /// Per-element data a model reads, passed explicitly with every call.
 template <int MaterialDim>

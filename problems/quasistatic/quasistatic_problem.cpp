@@ -3,6 +3,7 @@
 #include "sinew/core/input_error.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace sinew {
 
@@ -167,9 +168,12 @@ void QuasistaticProblem::hessian_values(ConstVectorRef x, double sigma, ConstVec
     fill_hessian(x, Projection::none, sigma, values);
 }
 
-void QuasistaticProblem::projected_hessian_values(ConstVectorRef x, VectorRef values)
+void QuasistaticProblem::projected_hessian_values(ConstVectorRef x, double sigma, ConstVectorRef, VectorRef values)
 {
-    fill_hessian(x, Projection::clamp, 1.0, values);
+    // σ·clamp(H_e) = clamp(σH_e) holds for σ ≥ 0 only.
+    if (sigma < 0.0)
+        throw std::logic_error("projected Hessian of " + options_.name + " needs sigma >= 0");
+    fill_hessian(x, Projection::clamp, sigma, values);
 }
 
 void QuasistaticProblem::set_affine_map(int set, const Eigen::MatrixXd& map, const Eigen::VectorXd& translation)

@@ -36,7 +36,7 @@ struct QuasistaticOptions {
 /// E the total potential (elastic + gravity + loads + obstacle penalties).
 /// The Hessian pattern is E's pattern restricted to the variables (mapped
 /// once at construction); the objective's PSD-projected Hessian is offered
-/// (has_projected_hessian) for projected Newton.
+/// (supports(Projection::clamp)) for projected Newton.
 ///
 /// Starting point: rest positions for the free nodes, prescribed values for
 /// the constrained ones — also for a large prescribed motion (a face turned
@@ -64,10 +64,7 @@ public:
     const SparsityPattern& jacobian_pattern() const override { return jacobian_pattern_; }
     void jacobian_values(ConstVectorRef x, VectorRef values) override;
     const SparsityPattern& hessian_pattern() const override { return hessian_pattern_; }
-    /// σ∇²E (the constraints are linear: no λ terms).
-    void hessian_values(ConstVectorRef x, double sigma, ConstVectorRef lambda, VectorRef values) override;
-    bool has_projected_hessian() const override { return true; }
-    void projected_hessian_values(ConstVectorRef x, VectorRef values) override;
+    bool supports(Projection) const override { return true; }
 
     DirichletStrategy strategy() const { return options_.dirichlet; }
     TotalPotential& potential() { return *potential_; }
@@ -91,6 +88,12 @@ public:
     Eigen::VectorXd variables_of(ConstVectorRef configuration) const;
     /// The rest positions with every prescribed coordinate at its value.
     const Eigen::VectorXd& prescribed_configuration() const { return prescribed_; }
+
+protected:
+    /// σ∇²E (the constraints are linear: no λ terms).
+    void hessian_values(ConstVectorRef x, double sigma, ConstVectorRef lambda, VectorRef values) override;
+    /// σ∇²E with each element's term projected (σ ≥ 0).
+    void projected_hessian_values(ConstVectorRef x, double sigma, ConstVectorRef lambda, VectorRef values) override;
 
 private:
     bool eliminating() const { return options_.dirichlet == DirichletStrategy::eliminate; }

@@ -128,9 +128,9 @@ public:
             }
             Map<VectorXd> v(values, nele_hess);
             if (m > 0 && lambda != nullptr)
-                nlp_.hessian_values(ConstMap(x, n), obj_factor, ConstMap(lambda, m), v);
+                nlp_.hessian(ConstMap(x, n), obj_factor, ConstMap(lambda, m), Projection::none, v);
             else
-                nlp_.hessian_values(ConstMap(x, n), obj_factor, VectorXd::Zero(m), v);
+                nlp_.hessian(ConstMap(x, n), obj_factor, VectorXd::Zero(m), Projection::none, v);
             return v.allFinite();
         });
     }
@@ -253,8 +253,10 @@ std::string describe(Ipopt::ApplicationReturnStatus s)
 }
 
 /// An Ipopt application with sinew's settings and the backend options set
-/// and checked; InputError naming an option Ipopt rejects.
-Ipopt::SmartPtr<Ipopt::IpoptApplication> configured_application(const SolverOptions& options)
+/// and checked; InputError naming an option Ipopt rejects. A problem whose
+/// Hessian is not exact (Nlp::exact_hessian) gets Ipopt's limited-memory
+/// quasi-Newton mode unless the options choose otherwise.
+Ipopt::SmartPtr<Ipopt::IpoptApplication> configured_application(const SolverOptions& options, bool exact_hessian)
 {
     Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
     // Ipopt prints its own complaint about a rejected option on standard
@@ -269,7 +271,7 @@ Ipopt::SmartPtr<Ipopt::IpoptApplication> configured_application(const SolverOpti
     list.SetNumericValue("tol", options.tolerance);
     list.SetNumericValue("constr_viol_tol", options.constraint_tolerance);
     list.SetIntegerValue("max_iter", options.max_iterations);
-    list.SetStringValue("hessian_approximation", "exact");
+    list.SetStringValue("hessian_approximation", exact_hessian ? "exact" : "limited-memory");
     for (const auto& [key, value] : options.backend)
         set_ipopt_option(list, key, value);
     if (options.verbosity >= 2)
@@ -289,12 +291,12 @@ public:
     }
     std::optional<std::string> refusal(const Nlp&) const override { return std::nullopt; }
 
-    void check_options(const SolverOptions& options) const override { configured_application(options); }
+    void check_options(const SolverOptions& options) const override { configured_application(options, true); }
 
     Result run(Nlp& nlp, const SolverOptions& options) const override
     {
         Result result;
-        Ipopt::SmartPtr<Ipopt::IpoptApplication> app = configured_application(options);
+        Ipopt::SmartPtr<Ipopt::IpoptApplication> app = configured_application(options, nlp.exact_hessian());
         Ipopt::SmartPtr<TnlpAdapter> adapter = new TnlpAdapter(nlp, options, result);
         const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(Ipopt::SmartPtr<Ipopt::TNLP>(adapter));
         result.status = to_status(status);

@@ -299,7 +299,7 @@ public:
 
     std::optional<std::string> refusal(const Nlp& nlp) const override
     {
-        const NlpKind kind = classify(nlp);
+        const NlpCapabilities kind = capabilities_of(nlp);
         if (kind.has_equalities && !can_.equalities)
             return name_ + " takes no equality constraints";
         if (kind.has_inequalities && !can_.inequalities)

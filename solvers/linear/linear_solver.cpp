@@ -2,6 +2,7 @@
 
 #include "sinew/core/input_error.hpp"
 #include "sinew/solvers/linear/cholmod_solver.hpp"
+#include "sinew/solvers/linear/mumps_solver.hpp"
 #include "sinew/solvers/linear/pcg_solver.hpp"
 #include "sinew/solvers/linear/umfpack_solver.hpp"
 
@@ -29,7 +30,7 @@ std::string to_string(LinearStatus status)
 
 std::vector<std::string> linear_solver_names()
 {
-    return {"cholmod", "cholmod-ldlt", "umfpack", "pcg-jacobi", "pcg-ichol"};
+    return {"cholmod", "cholmod-ldlt", "mumps-ldlt", "umfpack", "pcg-jacobi", "pcg-ichol"};
 }
 
 namespace {
@@ -55,6 +56,8 @@ std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name, double
         return make_cholmod_llt_solver();
     if (name == "cholmod-ldlt")
         return make_cholmod_ldlt_solver();
+    if (name == "mumps-ldlt")
+        return make_mumps_ldlt_solver();
     if (name == "umfpack")
         return make_umfpack_solver();
     if (name == "pcg-jacobi") {

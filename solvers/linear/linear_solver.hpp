@@ -68,6 +68,7 @@ protected:
 /// Names accepted by make_linear_solver, in order:
 ///   "cholmod"      CHOLMOD supernodal Cholesky LLᵀ (SPD)
 ///   "cholmod-ldlt" CHOLMOD simplicial LDLᵀ (symmetric quasi-definite, e.g. relaxed KKT)
+///   "mumps-ldlt"   MUMPS LDLᵀ with pivoting (symmetric indefinite, e.g. exact KKT), reports inertia
 ///   "umfpack"      UMFPACK LU (general, the fallback)
 ///   "pcg-jacobi"   conjugate gradients with a Jacobi preconditioner (SPD)
 ///   "pcg-ichol"    conjugate gradients with an incomplete Cholesky preconditioner (SPD)

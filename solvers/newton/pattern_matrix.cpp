@@ -48,4 +48,14 @@ void PatternMatrix::shift_diagonal(double shift)
         matrix_.valuePtr()[index] += shift;
 }
 
+void PatternMatrix::fix_variables(const std::vector<char>& fixed)
+{
+    for (int col = 0; col < matrix_.outerSize(); ++col)
+        for (SparseMatrix::InnerIterator entry(matrix_, col); entry; ++entry) {
+            const auto row = static_cast<size_t>(entry.row());
+            if (fixed[row] || fixed[static_cast<size_t>(col)])
+                entry.valueRef() = entry.row() == col ? 1.0 : 0.0;
+        }
+}
+
 } // namespace sinew

@@ -17,6 +17,9 @@ public:
     void fill(const Eigen::VectorXd& pattern_values);
     /// A += shift·I (the diagonal is always in the structure).
     void shift_diagonal(double shift);
+    /// Rows and columns i with fixed[i] != 0 become those of the identity
+    /// (a variable held at an active bound gets a zero step).
+    void fix_variables(const std::vector<char>& fixed);
 
     const SparseMatrix& matrix() const { return matrix_; }
 

@@ -1,54 +1,239 @@
 #include "sinew/solvers/newton/projected_newton.hpp"
 
-#include "sinew/core/format_number.hpp"
-#include "sinew/core/input_error.hpp"
-#include "sinew/core/parse_number.hpp"
 #include "sinew/solvers/linear/linear_solver.hpp"
+#include "sinew/solvers/newton/active_bounds.hpp"
+#include "sinew/solvers/newton/newton_recorder.hpp"
 #include "sinew/solvers/newton/pattern_matrix.hpp"
-#include "sinew/solvers/progress_log.hpp"
+#include "sinew/solvers/newton/regularized_factorization.hpp"
 
-#include <chrono>
 #include <cmath>
+#include <optional>
 
 namespace sinew {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 using Eigen::VectorXd;
 
-double seconds_since(Clock::time_point start)
-{
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
+/// One run of projected Newton: the Hessian policy (which H, which shift)
+/// over the shared line search, regularized factorization and recorder.
+class ProjectedNewtonRun {
+public:
+    ProjectedNewtonRun(Nlp& nlp, const SolverOptions& options, const NewtonSettings& settings,
+                       const std::string& solver_name)
+        : nlp_(nlp), options_(options), settings_(settings), recorder_(options, solver_name, nlp.name()),
+          factorization_(make_linear_solver(settings.linear_solver)),
+          hessian_(nlp.hessian_pattern(), nlp.num_variables()), hessian_values_(nlp.hessian_pattern().nonzeros()),
+          projected_(nlp.supports(Projection::clamp)), bounds_(nlp)
+    {
+        const int n = nlp.num_variables();
+        gradient_.resize(n);
+        rhs_.resize(n);
+        step_.resize(n);
+        alternative_.resize(n);
+        trial_.resize(n);
+        trial_gradient_.resize(n);
+        recorder_.add_statistic("projected_iterations", 0.0);
+        recorder_.set_row_annotation(settings.annotate_row);
+    }
 
-struct NewtonSettings {
-    std::string linear_solver = "cholmod";
-    double armijo = 1e-4;
-    int max_backtracks = 40;
+    Result run();
+
+private:
+    Result finish(Status status, const std::string& message)
+    {
+        return recorder_.finish(status, message, x_, factorization_);
+    }
+    void evaluate_gradient(const VectorXd& at, VectorXd& into)
+    {
+        recorder_.begin_assembly();
+        nlp_.gradient(at, into);
+        recorder_.end_assembly();
+    }
+    void assemble_hessian(Projection projection)
+    {
+        recorder_.begin_assembly();
+        nlp_.hessian(x_, 1.0, no_multipliers_, projection, hessian_values_);
+        hessian_.fill(hessian_values_);
+        if (bounds_.any())
+            hessian_.fix_variables(bounds_.fixed());
+        recorder_.end_assembly();
+    }
+    /// Factorizes the assembled H (+ shift·I, raised until Cholesky accepts it)
+    /// and solves H d = −∇f (zero at variables held at a bound) into `direction`.
+    bool solve_shifted(double& shift, VectorXd& direction, double diagonal_scale)
+    {
+        return factorization_.factorize_shifted(hessian_, shift, diagonal_scale) &&
+               factorization_.solve(rhs_, direction);
+    }
+    bool newton_step(bool exact);
+    void choose_between_exact_and_projected();
+    /// The line search along step_ and the update of x and the policy; a
+    /// Result when the solve ends here.
+    std::optional<Result> line_search_and_update(int iteration, bool exact);
+
+    Nlp& nlp_;
+    const SolverOptions& options_;
+    NewtonSettings settings_;
+    NewtonRecorder recorder_;
+    RegularizedFactorization factorization_;
+    PatternMatrix hessian_;
+    VectorXd hessian_values_;
+    const VectorXd no_multipliers_ = VectorXd(0);
+    const bool projected_;
+    ActiveBounds bounds_;
+
+    VectorXd x_, gradient_, rhs_, step_, alternative_, trial_, trial_gradient_;
+    double f_ = 0.0;
+    double diagonal_scale_ = 1.0;
+    bool trust_exact_ = false;     ///< the last step's ρ ≥ ½
+    bool near_solution_ = false;   ///< the last step's predicted decrease was below round-off of f
+    double kept_shift_ = 0.0;      ///< the shift the exact Hessian needed last time
+    double f_full_step_ = kInfinity;  ///< f at the full step, when already known
+    bool full_step_known_ = false;
 };
 
-NewtonSettings read_settings(const SolverOptions& options)
+Result ProjectedNewtonRun::run()
 {
-    NewtonSettings s;
-    for (const auto& [key, value] : options.backend) {
-        const std::string what = "projected-newton option " + key;
-        if (key == "linear_solver")
-            s.linear_solver = value;
-        else if (key == "armijo")
-            s.armijo = parse_finite_double(value, what);
-        else if (key == "max_backtracks")
-            s.max_backtracks = parse_int(value, what);
-        else
-            throw InputError("unknown projected-newton option '" + key +
-                             "'; valid options: linear_solver, armijo, max_backtracks");
+    x_ = nlp_.starting_point();
+    bounds_.project(x_);
+    f_ = nlp_.objective(x_);
+    recorder_.count_evaluation();
+    if (!std::isfinite(f_))
+        return finish(Status::numerical_error, "objective not finite at the starting point");
+    evaluate_gradient(x_, gradient_);
+    const double initial_gradient = bounds_.projected_gradient_norm(x_, gradient_);
+    recorder_.record(0, f_, 0.0, initial_gradient, 0.0, 0.0);
+    const double target =
+        settings_.gradient_target > 0.0 ? settings_.gradient_target : options_.tolerance * initial_gradient;
+
+    for (int iteration = 1;; ++iteration) {
+        if (bounds_.projected_gradient_norm(x_, gradient_) <= target)
+            return finish(Status::converged, "gradient reduced by tol");
+        if (iteration > options_.max_iterations)
+            return finish(Status::max_iterations, "iteration limit reached");
+        recorder_.set_iterations(iteration);
+        // H: the exact Hessian while its quadratic model predicted the last
+        // step well (ρ ≥ ½), shifted by the multiple of I that made it positive
+        // definite last time; the PSD projection the problem offers (seed 000
+        // §5.6) otherwise, and always at the start. Per-element projection
+        // alone stiffens H where element terms of opposite sign cancel in the
+        // sum, and then converges only linearly; the exact Hessian alone
+        // overshoots far from the solution (docs/solvers.md, "Projected Newton").
+        const bool exact = !projected_ || trust_exact_;
+        if (!newton_step(exact))
+            return finish(Status::numerical_error, factorization_.failure());
+        if (std::optional<Result> stop = line_search_and_update(iteration, exact))
+            return *stop;
     }
-    if (!(s.armijo > 0.0 && s.armijo < 0.5))
-        throw InputError("projected-newton option armijo = " + format_number(s.armijo) + " must lie in (0, 0.5)");
-    if (s.max_backtracks < 1)
-        throw InputError("projected-newton option max_backtracks = " + std::to_string(s.max_backtracks) +
-                         " must be at least 1");
-    make_linear_solver(s.linear_solver);  // InputError naming the valid solvers
-    return s;
+}
+
+bool ProjectedNewtonRun::newton_step(bool exact)
+{
+    bounds_.update(x_, gradient_);
+    rhs_ = -gradient_;
+    for (size_t i = 0; bounds_.any() && i < bounds_.fixed().size(); ++i)
+        if (bounds_.fixed()[i])
+            rhs_[static_cast<Eigen::Index>(i)] = 0.0;
+    assemble_hessian(exact ? Projection::none : Projection::clamp);
+    diagonal_scale_ = std::max(1.0, hessian_.matrix().diagonal().cwiseAbs().maxCoeff());
+    if (!exact)
+        recorder_.add_statistic("projected_iterations", 1.0);
+    double shift = exact ? kept_shift_ : 0.0;
+    full_step_known_ = false;
+    if (!solve_shifted(shift, step_, diagonal_scale_))
+        return false;
+    if (exact)
+        kept_shift_ = shift;
+    if (exact && projected_ && shift > 0.0 && near_solution_)
+        choose_between_exact_and_projected();
+    if (!(gradient_.dot(step_) < 0.0))
+        step_ = rhs_;  // not a descent direction: steepest descent
+    return true;
+}
+
+// Near the solution (the last predicted decrease below round-off of f) an
+// exact H that needs a shift is indefinite at what should be a minimum: e.g. a
+// membrane in compression at an in-plane equilibrium, whose out-of-plane
+// stiffness is negative while ∇f has no out-of-plane part. The shifted step
+// then converges only linearly, at the rate shift/(λ + shift) of H's small
+// positive eigenvalues λ (the codim sheet, docs/solvers.md). The projected H's
+// step does not see the negative directions; of the two full steps, the one
+// with the lower f is taken.
+void ProjectedNewtonRun::choose_between_exact_and_projected()
+{
+    assemble_hessian(Projection::clamp);
+    double projected_shift = 0.0;
+    if (!solve_shifted(projected_shift, alternative_, diagonal_scale_))
+        return;
+    trial_ = x_ + step_;
+    bounds_.project(trial_);
+    const double f_exact = nlp_.objective(trial_);
+    trial_ = x_ + alternative_;
+    bounds_.project(trial_);
+    const double f_projected = nlp_.objective(trial_);
+    recorder_.count_evaluation(2);
+    full_step_known_ = true;
+    f_full_step_ = f_exact;
+    if (std::isfinite(f_projected) && !(f_exact <= f_projected)) {
+        step_.swap(alternative_);
+        f_full_step_ = f_projected;
+    }
+}
+
+std::optional<Result> ProjectedNewtonRun::line_search_and_update(int iteration, bool exact)
+{
+    const double slope = gradient_.dot(step_);
+    auto merit = [&](double alpha) {
+        trial_ = x_ + alpha * step_;
+        bounds_.project(trial_);
+        if (alpha == 1.0 && full_step_known_)
+            return f_full_step_;
+        recorder_.count_evaluation();
+        return nlp_.objective(trial_);
+    };
+    // Near the solution the decrease ½∇fᵀH⁻¹∇f falls below the round-off of
+    // f: a step that keeps f within round-off and reduces the (projected)
+    // gradient's ∞-norm is accepted.
+    auto gradient_reduced = [&](double) {
+        nlp_.gradient(trial_, trial_gradient_);
+        return bounds_.projected_gradient_norm(trial_, trial_gradient_) <
+               bounds_.projected_gradient_norm(x_, gradient_);
+    };
+    const LineSearchOutcome search =
+        backtracking_line_search(merit, f_, slope, settings_.line_search, gradient_reduced);
+    if (search.status != LineSearchStatus::accepted) {
+        if (search.status == LineSearchStatus::stalled)
+            return finish(Status::stalled, "no measurable decrease of f along the Newton step");
+        return finish(Status::line_search_failed,
+                      "no sufficient decrease after " + std::to_string(search.backtracks) + " halvings");
+    }
+    // ρ = actual / predicted decrease of the full step; the model ½dᵀHd + ∇fᵀd
+    // with Hd = −∇f predicts −½∇fᵀd. Trust the exact Hessian next when ρ ≥ ½;
+    // in exact mode also adapt the shift as a Levenberg-Marquardt parameter:
+    // ×10 when ρ < ¼, ÷10 when ρ > ¾. A predicted decrease below round-off of
+    // f leaves ρ meaningless; that happens only near a solution, where the
+    // exact Hessian is the one to use.
+    const double predicted = -0.5 * slope;
+    const bool measurable = predicted > 1e-11 * std::max(1.0, std::abs(f_));
+    const double rho = !measurable                       ? 1.0
+                       : std::isfinite(search.full_step) ? (f_ - search.full_step) / predicted
+                                                         : -kInfinity;
+    trust_exact_ = rho >= 0.5;
+    near_solution_ = !measurable;
+    if (!measurable)
+        kept_shift_ = 0.0;  // near the solution: exact Newton, quadratic convergence
+    else if (exact && rho < 0.25)
+        kept_shift_ = kept_shift_ > 0.0 ? 10.0 * kept_shift_ : 0.0;
+    else if (exact && rho > 0.75)
+        kept_shift_ = kept_shift_ / 10.0 > 1e-8 * diagonal_scale_ ? kept_shift_ / 10.0 : 0.0;
+    if (step_below_roundoff(x_, trial_))
+        return finish(Status::stalled, "the Newton step is below the round-off of x");
+    x_.swap(trial_);
+    f_ = search.merit;
+    evaluate_gradient(x_, gradient_);
+    recorder_.record(iteration, f_, 0.0, bounds_.projected_gradient_norm(x_, gradient_),
+                     search.alpha * step_.cwiseAbs().maxCoeff(), search.alpha);
+    return std::nullopt;
 }
 
 class ProjectedNewton final : public Solver {
@@ -57,241 +242,54 @@ public:
     std::string description() const override
     {
         return "Newton on the exact Hessian near the solution, PSD-projected elsewhere, CHOLMOD, Armijo; "
-               "unconstrained problems";
+               "unconstrained and bound-constrained problems";
     }
+    std::vector<OptionDeclaration> declared_options() const override { return newton_option_declarations(); }
 
     std::optional<std::string> refusal(const Nlp& nlp) const override
     {
-        const NlpKind kind = classify(nlp);
-        if (!kind.unconstrained())
-            return "projected-newton takes unconstrained problems only (this one has " + kind.describe() +
-                   "; eliminate Dirichlet conditions, or use ipopt)";
+        const NlpCapabilities kind = capabilities_of(nlp);
+        if (kind.has_equalities || kind.has_inequalities)
+            return "projected-newton takes unconstrained and bound-constrained problems only (this one has " + kind.describe() +
+                   "; eliminate Dirichlet conditions, or use kkt-newton, augmented-lagrangian or ipopt)";
         return std::nullopt;
     }
 
-    void check_options(const SolverOptions& options) const override { read_settings(options); }
+    void check_options(const SolverOptions& options) const override
+    {
+        newton_settings(read_options(name(), declared_options(), {}, options.backend));
+    }
 
     Result run(Nlp& nlp, const SolverOptions& options) const override
     {
-        const NewtonSettings settings = read_settings(options);
-        const auto start = Clock::now();
-        const int n = nlp.num_variables();
-        ProgressLog log(options, name(), nlp.name());
-        Result result;
-        auto linear = make_linear_solver(settings.linear_solver);
-        PatternMatrix hessian(nlp.hessian_pattern(), n);
-        VectorXd hessian_values(nlp.hessian_pattern().nonzeros());
-        const VectorXd no_multipliers(0);
-        const bool projected = nlp.has_projected_hessian();
-        double assembly_s = 0.0, factorization_s = 0.0, linear_solve_s = 0.0;
-
-        VectorXd x = nlp.starting_point(), gradient(n), step(n), alternative(n), trial(n), trial_gradient(n);
-        bool trust_exact = false;    ///< the last step's ρ ≥ ½
-        bool near_solution = false;  ///< the last step's predicted decrease was below round-off of f
-        double kept_shift = 0.0;     ///< the shift the exact Hessian needed last time
-        int projected_iterations = 0, factorizations = 0;
-        double f = nlp.objective(x);
-        result.function_evaluations = 1;
-        auto finish = [&](Status status, const std::string& message) {
-            result.status = status;
-            result.message = message;
-            result.x = x;
-            result.linear_solves = linear->stats().solves;
-            result.statistics = {{"assembly_s", assembly_s},
-                              {"factorization_s", factorization_s},
-                              {"linear_solve_s", linear_solve_s},
-                              {"symbolic_analyses", linear->stats().symbolic_analyses},
-                              {"projected_iterations", projected_iterations},
-                              {"factorizations", factorizations}};
-            return result;
-        };
-        if (!std::isfinite(f))
-            return finish(Status::numerical_error, "objective not finite at the starting point");
-        auto timed = Clock::now();
-        nlp.gradient(x, gradient);
-        assembly_s += seconds_since(timed);
-        const double initial_gradient = gradient.cwiseAbs().maxCoeff();
-        auto record = [&](int iteration, double step_norm, double alpha) {
-            HistoryRow row;
-            row.iteration = iteration;
-            row.objective = f;
-            row.dual_residual = gradient.cwiseAbs().maxCoeff();
-            row.step_norm = step_norm;
-            row.step_length = alpha;
-            row.time_s = seconds_since(start);
-            result.history.push_back(row);
-            log.row(row);
-        };
-        record(0, 0.0, 0.0);
-
-        for (int iteration = 1;; ++iteration) {
-            const double gradient_norm = gradient.cwiseAbs().maxCoeff();
-            if (gradient_norm <= options.tolerance * initial_gradient)
-                return finish(Status::converged, "gradient reduced by tol");
-            if (iteration > options.max_iterations)
-                return finish(Status::max_iterations, "iteration limit reached");
-            result.iterations = iteration;
-
-            // H: the exact Hessian while its quadratic model predicted the
-            // last step well (ρ ≥ ½, below), shifted by the multiple of I that
-            // made it positive definite last time; the PSD projection the
-            // problem offers (seed 000 §5.6) otherwise, and always at the
-            // start. Per-element projection alone stiffens H where element
-            // terms of opposite sign cancel in the sum, and then converges
-            // only linearly; the exact Hessian alone overshoots far from the
-            // solution (measurements in docs/solvers.md, "Projected Newton").
-            const bool exact = !projected || trust_exact;
-            timed = Clock::now();
-            if (exact)
-                nlp.hessian_values(x, 1.0, no_multipliers, hessian_values);
-            else
-                nlp.projected_hessian_values(x, hessian_values);
-            hessian.fill(hessian_values);
-            assembly_s += seconds_since(timed);
-            const double diagonal_scale = std::max(1.0, hessian.matrix().diagonal().cwiseAbs().maxCoeff());
-            if (!exact)
-                ++projected_iterations;
-            // Factorizes the H in `hessian` plus shift·I and solves H d = −∇f; an
-            // H Cholesky rejects (indefinite, or a projection singular by
-            // round-off) is shifted by a growing multiple of I. The shift used
-            // goes back in `shift`; false with `failure` set when no shift works.
-            std::string failure;
-            auto solve_shifted = [&](double& shift, VectorXd& direction) {
-                if (shift > 0.0)
-                    hessian.shift_diagonal(shift);
-                auto timed_here = Clock::now();
-                LinearStatus factorized = linear->factorize(hessian.matrix());
-                factorization_s += seconds_since(timed_here);
-                ++factorizations;
-                while (factorized == LinearStatus::not_positive_definite || factorized == LinearStatus::singular) {
-                    const double next = shift == 0.0 ? 1e-8 * diagonal_scale : 10.0 * shift;
-                    if (!std::isfinite(next) || next > 1e20)
-                        break;
-                    hessian.shift_diagonal(next - shift);
-                    shift = next;
-                    timed_here = Clock::now();
-                    factorized = linear->factorize(hessian.matrix());
-                    factorization_s += seconds_since(timed_here);
-                    ++factorizations;
-                }
-                if (factorized != LinearStatus::ok) {
-                    failure = "factorization failed: " + linear->last_message();
-                    return false;
-                }
-                timed_here = Clock::now();
-                const LinearStatus solved = linear->solve(-gradient, direction);
-                linear_solve_s += seconds_since(timed_here);
-                if (solved != LinearStatus::ok || !direction.allFinite()) {
-                    failure = "linear solve failed: " + linear->last_message();
-                    return false;
-                }
-                return true;
-            };
-            double shift = exact ? kept_shift : 0.0;
-            if (!solve_shifted(shift, step))
-                return finish(Status::numerical_error, failure);
-            if (exact)
-                kept_shift = shift;
-            // The value at the full step, when already known (below).
-            double f_full_step = kInfinity;
-            bool full_step_known = false;
-            // Near the solution (the last predicted decrease below round-off of f)
-            // an exact H that needs a shift is indefinite at what should be a
-            // minimum: e.g. a membrane in compression at an in-plane equilibrium,
-            // whose out-of-plane stiffness is negative while ∇f has no
-            // out-of-plane part. The shifted step then converges only linearly,
-            // at the rate shift/(λ + shift) of H's small positive eigenvalues λ
-            // (the codim sheet, docs/solvers.md). The projected H's step does not
-            // see the negative directions; of the two full steps, the one with
-            // the lower f is taken.
-            if (exact && projected && shift > 0.0 && near_solution) {
-                timed = Clock::now();
-                nlp.projected_hessian_values(x, hessian_values);
-                hessian.fill(hessian_values);
-                assembly_s += seconds_since(timed);
-                double projected_shift = 0.0;
-                if (solve_shifted(projected_shift, alternative)) {
-                    const double f_exact = nlp.objective(x + step);
-                    const double f_projected = nlp.objective(x + alternative);
-                    result.function_evaluations += 2;
-                    full_step_known = true;
-                    f_full_step = f_exact;
-                    if (std::isfinite(f_projected) && !(f_exact <= f_projected)) {
-                        step.swap(alternative);
-                        f_full_step = f_projected;
-                    }
-                }
-            }
-            double slope = gradient.dot(step);
-            if (!(slope < 0.0)) {
-                step = -gradient;  // not a descent direction: steepest descent
-                slope = -gradient.squaredNorm();
-            }
-
-            // Armijo backtracking: f(x + α d) ≤ f(x) + c₁ α ∇fᵀd, f finite.
-            double alpha = 1.0;
-            double f_trial = kInfinity;
-            int backtracks = 0;
-            for (;; ++backtracks) {
-                trial = x + alpha * step;
-                if (backtracks == 0 && full_step_known) {
-                    f_trial = f_full_step;
-                } else {
-                    f_trial = nlp.objective(trial);
-                    ++result.function_evaluations;
-                }
-                if (backtracks == 0)
-                    f_full_step = f_trial;
-                if (std::isfinite(f_trial) && f_trial <= f + settings.armijo * alpha * slope)
-                    break;
-                // Near the solution the decrease ½ ∇fᵀH⁻¹∇f falls below the
-                // round-off of f: accept a step that keeps f within round-off
-                // and reduces ‖∇f‖∞.
-                if (std::isfinite(f_trial) && f_trial <= f + 1e-12 * std::abs(f)) {
-                    nlp.gradient(trial, trial_gradient);
-                    if (trial_gradient.cwiseAbs().maxCoeff() < gradient.cwiseAbs().maxCoeff())
-                        break;
-                }
-                if (backtracks == settings.max_backtracks) {
-                    // At round-off level f cannot decrease measurably: stop there.
-                    if (std::isfinite(f_trial) && std::abs(f_trial - f) <= 1e-14 * std::max(1.0, std::abs(f)))
-                        return finish(Status::stalled, "no measurable decrease of f along the Newton step");
-                    return finish(Status::line_search_failed, "no sufficient decrease after " +
-                                                                  std::to_string(backtracks) + " halvings");
-                }
-                alpha *= 0.5;
-            }
-            // ρ = actual / predicted decrease of the full step; the model
-            // ½dᵀHd + ∇fᵀd with Hd = −∇f predicts −½∇fᵀd. Trust the exact
-            // Hessian next when ρ ≥ ½; in exact mode also adapt the shift as a
-            // Levenberg-Marquardt parameter: ×10 when ρ < ¼, ÷10 when ρ > ¾.
-            // A predicted decrease below round-off of f leaves ρ meaningless;
-            // that happens only near a solution, where the exact Hessian is
-            // the one to use.
-            const double predicted = -0.5 * slope;
-            const bool measurable = predicted > 1e-11 * std::max(1.0, std::abs(f));
-            const double rho = !measurable               ? 1.0
-                               : std::isfinite(f_full_step) ? (f - f_full_step) / predicted
-                                                            : -kInfinity;
-            trust_exact = rho >= 0.5;
-            near_solution = !measurable;
-            if (!measurable)
-                kept_shift = 0.0;  // near the solution: exact Newton, quadratic convergence
-            else if (exact && rho < 0.25)
-                kept_shift = kept_shift > 0.0 ? 10.0 * kept_shift : 0.0;
-            else if (exact && rho > 0.75)
-                kept_shift = kept_shift / 10.0 > 1e-8 * diagonal_scale ? kept_shift / 10.0 : 0.0;
-            x.swap(trial);
-            f = f_trial;
-            timed = Clock::now();
-            nlp.gradient(x, gradient);
-            assembly_s += seconds_since(timed);
-            record(iteration, alpha * step.cwiseAbs().maxCoeff(), alpha);
-        }
+        const NewtonSettings settings = newton_settings(read_options(name(), declared_options(), {}, options.backend));
+        return run_projected_newton(nlp, options, settings, name());
     }
 };
 
 } // namespace
+
+std::vector<OptionDeclaration> newton_option_declarations()
+{
+    return {choice_option("linear_solver", "cholmod", "sparse solver of H d = -grad f", linear_solver_names()),
+            real_option("armijo", "1e-4", "sufficient-decrease constant c1 of the Armijo test", 0.0, 0.5, true, true),
+            integer_option("max_backtracks", "40", "halvings of the step before line_search_failed", 1, 1000)};
+}
+
+NewtonSettings newton_settings(const OptionValues& values)
+{
+    NewtonSettings settings;
+    settings.linear_solver = values.text("linear_solver");
+    settings.line_search.armijo = values.real("armijo");
+    settings.line_search.max_backtracks = values.integer("max_backtracks");
+    return settings;
+}
+
+Result run_projected_newton(Nlp& nlp, const SolverOptions& options, const NewtonSettings& settings,
+                            const std::string& solver_name)
+{
+    return ProjectedNewtonRun(nlp, options, settings, solver_name).run();
+}
 
 std::unique_ptr<Solver> make_projected_newton_solver() { return std::make_unique<ProjectedNewton>(); }
 

@@ -1,6 +1,7 @@
 #include "sinew/core/input_error.hpp"
 #include "sinew/solvers/linear/linear_solver.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -162,7 +163,7 @@ SparseMatrix kkt_matrix(int m, int num_constraints, double delta, std::mt19937& 
 
 TEST_CASE("linear solver names, factory and status names", "[linear]")
 {
-    const std::vector<std::string> expected = {"cholmod", "cholmod-ldlt", "umfpack", "pcg-jacobi", "pcg-ichol"};
+    const std::vector<std::string> expected = {"cholmod", "cholmod-ldlt", "mumps-ldlt", "umfpack", "pcg-jacobi", "pcg-ichol"};
     REQUIRE(sinew::linear_solver_names() == expected);
     for (const std::string& name : expected)
         CHECK(sinew::make_linear_solver(name)->name() == name);
@@ -476,4 +477,62 @@ TEST_CASE("PCG meets a looser requested tolerance", "[linear]")
     CHECK(residual <= tolerance);
     // It stops near the tolerance rather than running on to machine precision.
     CHECK(residual > 1e-10);
+}
+
+TEST_CASE("MUMPS LDLT solves a saddle-point KKT system with a zero block and reports its inertia", "[linear][mumps]")
+{
+    std::mt19937 rng(23);
+    const int num_constraints = 100;
+    const SparseMatrix K = kkt_matrix(10, num_constraints, 0.0, rng);  // [H Jᵀ; J 0], H is 1000 × 1000
+    const int n = static_cast<int>(K.rows()) - num_constraints;
+    const Eigen::VectorXd b = random_vector(static_cast<int>(K.rows()), rng);
+    const auto solver = sinew::make_linear_solver("mumps-ldlt");
+    const Eigen::VectorXd x = factorize_and_solve(*solver, K, b);
+    CHECK(relative_residual(K, x, b) <= 1e-12);
+    // H positive definite, J full row rank: inertia (n, m, 0) (Sylvester).
+    CHECK(solver->inertia().positive == n);
+    CHECK(solver->inertia().negative == num_constraints);
+    CHECK(solver->inertia().zero == 0);
+}
+
+TEST_CASE("MUMPS LDLT inertia matches the eigenvalues of random indefinite matrices", "[linear][mumps]")
+{
+    for (unsigned seed = 30; seed < 35; ++seed) {
+        CAPTURE(seed);
+        std::mt19937 rng(seed);
+        const int size = 60;
+        Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(size, size);
+        for (int i = 0; i < size; ++i)
+            for (int j = 0; j <= i; ++j)
+                if (i == j || uniform(rng, 0.0, 1.0) < 0.1)
+                    dense(i, j) = dense(j, i) = uniform(rng, -1.0, 1.0);
+        const Eigen::VectorXd eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(dense).eigenvalues();
+        REQUIRE(eigenvalues.cwiseAbs().minCoeff() > 1e-6);  // away from singular, so the count is unambiguous
+        const SparseMatrix A = dense.sparseView();
+        const auto solver = sinew::make_linear_solver("mumps-ldlt");
+        REQUIRE(solver->factorize(A) == LinearStatus::ok);
+        CHECK(solver->inertia().negative == (eigenvalues.array() < 0.0).count());
+        CHECK(solver->inertia().positive == (eigenvalues.array() > 0.0).count());
+        Eigen::VectorXd x;
+        const Eigen::VectorXd b = random_vector(size, rng);
+        REQUIRE(solver->solve(b, x) == LinearStatus::ok);
+        CHECK((dense * x - b).norm() <= 1e-10 * (dense.norm() * x.norm() + b.norm()));
+    }
+}
+
+TEST_CASE("MUMPS LDLT reports a KKT matrix with dependent constraints as singular", "[linear][mumps]")
+{
+    // [I Jᵀ; J 0] with J's two rows equal: one null pivot.
+    Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(5, 5);
+    dense.topLeftCorner(3, 3).setIdentity();
+    const Eigen::RowVector3d row(1.0, 2.0, 3.0);
+    dense.block(3, 0, 1, 3) = row;
+    dense.block(4, 0, 1, 3) = row;
+    dense.block(0, 3, 3, 1) = row.transpose();
+    dense.block(0, 4, 3, 1) = row.transpose();
+    const SparseMatrix A = dense.sparseView();
+    const auto solver = sinew::make_linear_solver("mumps-ldlt");
+    CHECK(solver->factorize(A) == LinearStatus::singular);
+    CHECK(solver->inertia().zero == 1);
+    CHECK_FALSE(solver->last_message().empty());
 }

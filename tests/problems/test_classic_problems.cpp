@@ -143,7 +143,7 @@ MatrixXd dense_hessian(Nlp& nlp, const VectorXd& x, double sigma, const VectorXd
 {
     const SparsityPattern& pattern = nlp.hessian_pattern();
     VectorXd values(pattern.nonzeros());
-    nlp.hessian_values(x, sigma, lambda, values);
+    nlp.hessian(x, sigma, lambda, Projection::none, values);
     const int n = nlp.num_variables();
     MatrixXd H = MatrixXd::Zero(n, n);
     for (int k = 0; k < pattern.nonzeros(); ++k) {
@@ -263,11 +263,22 @@ std::pair<VectorXd, VectorXd> sampling_box(Nlp& nlp, const PublishedPoints& poin
     return {lower, upper};
 }
 
+/// classic_problems() of suite "classic"; those of suite "constrained" are
+/// tested in test_constrained_problems.cpp.
+std::vector<BuiltinProblem> classic_suite()
+{
+    std::vector<BuiltinProblem> problems;
+    for (auto& problem : classic_problems())
+        if (problem.suite == "classic")
+            problems.push_back(std::move(problem));
+    return problems;
+}
+
 } // namespace
 
 TEST_CASE("classic registry: names, order, suite, descriptions and references", "[problems][classic]")
 {
-    const std::vector<BuiltinProblem> problems = classic_problems();
+    const std::vector<BuiltinProblem> problems = classic_suite();
     REQUIRE(problems.size() >= 6);
     CHECK(problems[0].name == "rosenbrock2");
     CHECK(problems[1].name == "rosenbrock1000");
@@ -285,7 +296,7 @@ TEST_CASE("classic registry: names, order, suite, descriptions and references", 
         // The description states the size and the kind, and they are the true ones.
         const std::string size = std::to_string(nlp->num_variables()) + " variables";
         CHECK(problem.description.find(size) != std::string::npos);
-        CHECK(problem.description.find(classify(*nlp).describe()) != std::string::npos);
+        CHECK(problem.description.find(capabilities_of(*nlp).describe()) != std::string::npos);
         REQUIRE(problem.reference_objective.has_value());
         CHECK(std::isfinite(*problem.reference_objective));
         CHECK_FALSE(problem.reference_source.empty());
@@ -300,7 +311,7 @@ TEST_CASE("classic registry: names, order, suite, descriptions and references", 
 
 TEST_CASE("classic problems: the published starting point, consistent bounds", "[problems][classic]")
 {
-    for (const auto& problem : classic_problems()) {
+    for (const auto& problem : classic_suite()) {
         DYNAMIC_SECTION(problem.name)
         {
             const auto nlp = problem.make();
@@ -327,7 +338,7 @@ TEST_CASE("classic problems: the published starting point, consistent bounds", "
 TEST_CASE("classic problems: sparsity patterns are in range, lower triangular, without duplicates",
           "[problems][classic]")
 {
-    for (const auto& problem : classic_problems()) {
+    for (const auto& problem : classic_suite()) {
         DYNAMIC_SECTION(problem.name)
         {
             const auto nlp = problem.make();
@@ -371,7 +382,7 @@ TEST_CASE("classic problems: gradient, Jacobian and Hessian agree with central d
 {
     std::mt19937 rng(kSeed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    for (const auto& problem : classic_problems()) {
+    for (const auto& problem : classic_suite()) {
         DYNAMIC_SECTION(problem.name)
         {
             const auto nlp = problem.make();
@@ -406,7 +417,7 @@ TEST_CASE("classic problems: gradient, Jacobian and Hessian agree with central d
 TEST_CASE("classic problems: the published solution gives the published optimum and is feasible",
           "[problems][classic]")
 {
-    for (const auto& problem : classic_problems()) {
+    for (const auto& problem : classic_suite()) {
         DYNAMIC_SECTION(problem.name)
         {
             const auto nlp = problem.make();
@@ -429,7 +440,7 @@ TEST_CASE("classic problems: evaluations fill pre-sized outputs in place, the sa
           "[problems][classic]")
 {
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    for (const auto& problem : classic_problems()) {
+    for (const auto& problem : classic_suite()) {
         DYNAMIC_SECTION(problem.name)
         {
             const auto nlp = problem.make();
@@ -452,7 +463,7 @@ TEST_CASE("classic problems: evaluations fill pre-sized outputs in place, the sa
             nlp->gradient(x, grad);
             nlp->constraints(x, c);
             nlp->jacobian_values(x, jacobian);
-            nlp->hessian_values(x, 1.5, lambda, hessian);
+            nlp->hessian(x, 1.5, lambda, Projection::none, hessian);
 
             CHECK(std::isfinite(f));
             CHECK(grad.size() == n);
@@ -474,7 +485,7 @@ TEST_CASE("classic problems: evaluations fill pre-sized outputs in place, the sa
             nlp->gradient(x, grad_again);
             nlp->constraints(x, c_again);
             nlp->jacobian_values(x, jacobian_again);
-            nlp->hessian_values(x, 1.5, lambda, hessian_again);
+            nlp->hessian(x, 1.5, lambda, Projection::none, hessian_again);
             CHECK(grad_again == grad);
             CHECK(c_again == c);
             CHECK(jacobian_again == jacobian);

@@ -119,8 +119,8 @@ TEST_CASE("quasistatic NLP: elimination and equality constraints give the same o
     REQUIRE(eliminated.num_constraints() == 0);
     REQUIRE(constrained.num_variables() == n_full);
     REQUIRE(constrained.num_constraints() == n_prescribed);
-    CHECK(classify(eliminated).unconstrained());
-    CHECK(classify(constrained).num_equalities == n_prescribed);
+    CHECK(capabilities_of(eliminated).unconstrained());
+    CHECK(capabilities_of(constrained).num_equalities == n_prescribed);
 
     std::mt19937 rng(62);
     std::uniform_real_distribution<double> u11(-1.0, 1.0);
@@ -150,8 +150,8 @@ TEST_CASE("quasistatic NLP: elimination and equality constraints give the same o
     // coordinates, entry for entry; σ scales it.
     const Eigen::VectorXd no_lambda = Eigen::VectorXd::Zero(constrained.num_constraints());
     Eigen::VectorXd h_free(eliminated.hessian_pattern().nonzeros()), h_all(constrained.hessian_pattern().nonzeros());
-    eliminated.hessian_values(x_free, 2.0, Eigen::VectorXd(), h_free);
-    constrained.hessian_values(x_all, 2.0, no_lambda, h_all);
+    eliminated.hessian(x_free, 2.0, Eigen::VectorXd(), Projection::none, h_free);
+    constrained.hessian(x_all, 2.0, no_lambda, Projection::none, h_all);
     // Free coordinate of each NLP variable: variables_of picks them from a
     // vector of coordinate indices.
     const Eigen::VectorXd free_ids = eliminated.variables_of(Eigen::VectorXd::LinSpaced(n_full, 0, n_full - 1));
@@ -178,7 +178,7 @@ TEST_CASE("quasistatic NLP: projected Hessian offered and PSD, exact Hessian ind
 {
     Bar bar;
     QuasistaticProblem nlp(bar.mesh.nodes, bar.potential, bar.dirichlet());
-    REQUIRE(nlp.has_projected_hessian());
+    REQUIRE(nlp.supports(Projection::clamp));
     std::mt19937 rng(63);
     std::uniform_real_distribution<double> u11(-1.0, 1.0);
     Eigen::VectorXd x = nlp.starting_point();
@@ -195,10 +195,10 @@ TEST_CASE("quasistatic NLP: projected Hessian offered and PSD, exact Hessian ind
         return H;
     };
     Eigen::VectorXd values(nlp.hessian_pattern().nonzeros());
-    nlp.projected_hessian_values(x, values);
+    nlp.hessian(x, 1.0, Eigen::VectorXd(), Projection::clamp, values);
     const Eigen::MatrixXd projected = dense(values);
     CHECK(smallest_eigenvalue(projected) >= -1e-8 * projected.cwiseAbs().maxCoeff());
-    nlp.hessian_values(x, 1.0, Eigen::VectorXd(), values);
+    nlp.hessian(x, 1.0, Eigen::VectorXd(), Projection::none, values);
     const Eigen::MatrixXd exact = dense(values);
     CHECK(smallest_eigenvalue(exact) < 0.0);
 }

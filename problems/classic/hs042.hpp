@@ -1,0 +1,44 @@
+#pragma once
+#include "sinew/problems/nlp.hpp"
+
+#include <string>
+
+namespace sinew {
+
+/// Hock-Schittkowski problem 42 (W. Hock, K. Schittkowski, "Test Examples for
+/// Nonlinear Programming Codes", Lecture Notes in Economics and Mathematical
+/// Systems 187, Springer, 1981), with 0-based variables x₀…x₃:
+///
+///     minimize   (x₀ − 1)² + (x₁ − 2)² + (x₂ − 3)² + (x₃ − 4)²
+///     subject to c₀ = x₀ − 2 = 0
+///                c₁ = x₂² + x₃² − 2 = 0
+///
+/// Start (1, 1, 1, 1). Published optimum f* = 28 − 10√2 ≈ 13.857864376 at
+/// x* = (2, 2, 0.6√2, 0.8√2).
+class Hs042 : public Nlp {
+public:
+    Hs042();
+
+    std::string name() const override { return "hs042"; }
+    int num_variables() const override { return 4; }
+    int num_constraints() const override { return 2; }
+    void constraint_bounds(VectorRef lower, VectorRef upper) const override;
+    Vector starting_point() const override;
+
+    double objective(ConstVectorRef x) override;
+    void gradient(ConstVectorRef x, VectorRef grad) override;
+    void constraints(ConstVectorRef x, VectorRef c) override;
+
+    const SparsityPattern& jacobian_pattern() const override { return jacobian_pattern_; }
+    void jacobian_values(ConstVectorRef x, VectorRef values) override;
+    const SparsityPattern& hessian_pattern() const override { return hessian_pattern_; }
+
+protected:
+    void hessian_values(ConstVectorRef x, double sigma, ConstVectorRef lambda, VectorRef values) override;
+
+private:
+    SparsityPattern jacobian_pattern_;
+    SparsityPattern hessian_pattern_;
+};
+
+} // namespace sinew

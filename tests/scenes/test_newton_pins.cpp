@@ -1,0 +1,50 @@
+// Projected Newton's work on every built-in quasistatic scene, pinned:
+// iterations, factorizations, projected iterations, objective evaluations
+// and linear solves, as measured before the Newton core was split into
+// shared pieces (issue 12). A change that moves one of them on purpose moves
+// the pin here and the figures in docs/benchmarks.md together.
+#include "sinew/problems/quasistatic/builtin_scenes.hpp"
+#include "sinew/solvers/solver.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace sinew;
+
+namespace {
+
+struct Pin {
+    const char* scene;
+    int iterations;
+    int factorizations;
+    int projected_iterations;
+    int function_evaluations;
+    int linear_solves;
+};
+
+void check_pin(const Pin& pin)
+{
+    Scene scene = make_builtin_scene(pin.scene);
+    const Result result = solve(*scene.problem, "projected-newton", SolverOptions{});
+    CAPTURE(pin.scene, result.message);
+    REQUIRE(result.status == Status::converged);
+    CHECK(result.iterations == pin.iterations);
+    CHECK(result.statistics.at("factorizations") == pin.factorizations);
+    CHECK(result.statistics.at("projected_iterations") == pin.projected_iterations);
+    CHECK(result.function_evaluations == pin.function_evaluations);
+    CHECK(result.linear_solves == pin.linear_solves);
+}
+
+} // namespace
+
+TEST_CASE("projected Newton work is pinned on cantilever-6k", "[pins]") { check_pin({"cantilever-6k", 15, 22, 2, 20, 15}); }
+
+TEST_CASE("projected Newton work is pinned on twisted-cantilever-6k", "[pins]")
+{
+    check_pin({"twisted-cantilever-6k", 9, 9, 3, 12, 9});
+}
+
+TEST_CASE("projected Newton work is pinned on muscle-spindle", "[pins]") { check_pin({"muscle-spindle", 17, 26, 3, 23, 17}); }
+
+TEST_CASE("projected Newton work is pinned on qr-plate", "[pins]") { check_pin({"qr-plate", 9, 17, 1, 10, 9}); }
+
+TEST_CASE("projected Newton work is pinned on codim-sheet", "[pins]") { check_pin({"codim-sheet", 13, 37, 1, 15, 14}); }
