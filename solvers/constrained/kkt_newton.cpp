@@ -221,6 +221,7 @@ Result KktNewtonRun::run()
         if (!(slope < 0.0))
             return finish(Status::stalled, "the KKT step is not a descent direction of the merit (round-off)");
         const double merit0 = merit(f_, c_);
+        const double primal_before_step = primal;
         auto merit_along = [&](double a) {
             trial_ = x_ + a * d_;
             bounds_.project(trial_);
@@ -250,10 +251,15 @@ Result KktNewtonRun::run()
         alpha = search.alpha;
         step_norm = (trial_ - x_).cwiseAbs().maxCoeff();
         x_ = trial_;
-        // λ takes the KKT system's multipliers whatever α: a step shortened
-        // by the line search still gives λ⁺ at x, and a λ carried from a
-        // singular system (J rank-deficient at x₀) would spoil H for many steps.
-        lambda_ = lambda_plus_;
+        // λ takes the KKT system's multipliers whatever α (a step shortened by
+        // the line search still gives λ⁺ at x), except, far from feasibility,
+        // those of a singular system (δc > 0: J rank-deficient), which say
+        // nothing of λ* and would spoil H = ∇²f + Σλᵢ∇²cᵢ for many steps.
+        // Near feasibility (‖c̃‖∞ ≤ √tol) a rank-deficient J's regularized λ⁺
+        // is a valid choice among many multipliers and is taken.
+        const bool regularized = factorization_.attempts().back().delta_c > 0.0;
+        if (!regularized || primal_before_step <= std::sqrt(options_.tolerance))
+            lambda_ = lambda_plus_;
         f_ = nlp_.objective(x_);
         recorder_.count_evaluation();
         evaluate_first_order();

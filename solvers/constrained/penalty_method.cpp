@@ -63,6 +63,9 @@ public:
 
 private:
     Result solve_subproblem(double kappa, int outer);
+    /// tol × max(1, ‖∇f(x)‖∞): the subproblems' gradient target at x, and the
+    /// bound the last one must have met for the solve to count as converged.
+    double gradient_target(const VectorXd& x);
     void absorb(const Result& inner, int outer);
     Result finish(Status status, const std::string& message, const VectorXd& x);
 
@@ -81,10 +84,7 @@ Result OuterLoop::solve_subproblem(double kappa, int outer)
 {
     function_.set_parameters(lambda_, kappa);
     NewtonSettings inner = settings_.inner;
-    // Subproblems end at an absolute gradient: tol × max(1, ‖∇f‖∞ at the start).
-    VectorXd g(nlp_.num_variables());
-    nlp_.gradient(function_.starting_point(), g);
-    inner.gradient_target = options_.tolerance * std::max(1.0, g.cwiseAbs().maxCoeff());
+    inner.gradient_target = gradient_target(function_.starting_point());
     inner.annotate_row = [this, outer](HistoryRow& row) {
         row.objective = function_.last_objective();
         row.constraint_violation =
@@ -94,6 +94,13 @@ Result OuterLoop::solve_subproblem(double kappa, int outer)
     SolverOptions inner_options = options_;
     inner_options.max_iterations = std::max(1, options_.max_iterations - total_.iterations);
     return run_projected_newton(function_, inner_options, inner, name_);
+}
+
+double OuterLoop::gradient_target(const VectorXd& x)
+{
+    VectorXd g(nlp_.num_variables());
+    nlp_.gradient(x, g);
+    return options_.tolerance * std::max(1.0, g.cwiseAbs().maxCoeff());
 }
 
 void OuterLoop::absorb(const Result& inner, int outer)
@@ -131,6 +138,7 @@ Result OuterLoop::run()
     double last_violation = kInfinity;
     VectorXd c(m);
     for (int outer = 0;; ++outer) {
+        const double target = gradient_target(x);
         const Result inner = solve_subproblem(kappa, outer);
         absorb(inner, outer);
         x = inner.x;
@@ -141,7 +149,10 @@ Result OuterLoop::run()
             return finish(inner.status, "subproblem " + std::to_string(outer + 1) + ": " + inner.message, x);
         function_.constraints().residuals(x, c);
         const double violation = m > 0 ? c.cwiseAbs().maxCoeff() : 0.0;
-        if (violation <= options_.constraint_tolerance && inner.status == Status::converged)
+        // The subproblem's target, set from ∇f at its start, must also hold
+        // for ∇f at its end; otherwise the next subproblem tightens it.
+        const bool stationary = target <= gradient_target(x);
+        if (violation <= options_.constraint_tolerance && inner.status == Status::converged && stationary)
             return finish(Status::converged, "violation within constr_tol at kappa = " + format_number(kappa), x);
         if (settings_.multipliers)
             lambda_ += kappa * c;  // λ ← λ + κc̃ (Ipopt's sign: ∇f + Jᵀλ = 0)

@@ -29,9 +29,10 @@ std::vector<OptionDeclaration> relaxed_kkt_options()
                         1e20, true),
             choice_option("linear_system", "ldlt", "ldlt: the quasi-definite KKT matrix; schur: H + kappa J^T J",
                           {"ldlt", "schur"}),
-            choice_option("ldlt_solver", "cholmod-ldlt",
-                          "the LDL^T of linear_system=ldlt (quasi-definite: no pivoting needed)",
-                          {"cholmod-ldlt", "mumps-ldlt"}),
+            choice_option("ldlt_solver", "mumps-ldlt",
+                          "the LDL^T of linear_system=ldlt: MUMPS pivots; CHOLMOD's does not, and meets zero "
+                          "pivots where H is indefinite",
+                          {"mumps-ldlt", "cholmod-ldlt"}),
             real_option("armijo", "1e-4", "sufficient-decrease constant c1 on E + kappa/2 |c|^2", 0.0, 0.5, true,
                         true),
             integer_option("max_backtracks", "40", "halvings of the step before line_search_failed", 1, 1000)};

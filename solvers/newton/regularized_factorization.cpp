@@ -79,6 +79,11 @@ bool RegularizedFactorization::factorize_with_inertia(
     while (delta_w <= schedule.max_delta_w) {
         if (attempt(delta_w, delta_c)) {
             schedule.last_delta_w = delta_w;
+            // A singular K at δw = 0 may owe it to H alone (zero curvature on
+            // J's null space), which δw cures: then δc is not needed, and the
+            // multipliers of the unperturbed constraint block are kept.
+            if (delta_c > 0.0 && !attempt(delta_w, 0.0))
+                attempt(delta_w, delta_c);
             return true;
         }
         delta_w *= growth;
