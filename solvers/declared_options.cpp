@@ -129,8 +129,8 @@ std::string describe_options(const std::vector<OptionDeclaration>& declared)
         const char* type = d.type == OptionDeclaration::Type::real      ? "real"
                            : d.type == OptionDeclaration::Type::integer ? "integer"
                                                                         : "choice";
-        out << "  " << d.name << std::string(d.name.size() < 20 ? 20 - d.name.size() : 1, ' ') << type << "  "
-            << range_text(d) << "  default " << d.default_value << "\n      " << d.doc << "\n";
+        out << "  " << d.name << " (" << type << ", " << range_text(d) << ", default " << d.default_value
+            << ")\n      " << d.doc << "\n";
     }
     return out.str();
 }

@@ -4,6 +4,7 @@
 #include "sinew/solvers/result.hpp"
 #include "sinew/solvers/solver_options.hpp"
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,6 +21,9 @@ public:
     /// The backend options this solver declares (DESIGN.md, "Options"); empty
     /// for backends that take their own options by name (Ipopt, NLopt).
     virtual std::vector<OptionDeclaration> declared_options() const { return {}; }
+    /// The options of nested solvers by prefix ("inner" → the subproblem
+    /// solver's declarations, given as inner.name=value).
+    virtual std::map<std::string, std::vector<OptionDeclaration>> nested_options() const { return {}; }
     /// Why this solver cannot handle `nlp` (e.g. "LBFGS does not take
     /// constraints"), or nothing when it can.
     virtual std::optional<std::string> refusal(const Nlp& nlp) const = 0;

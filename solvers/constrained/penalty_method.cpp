@@ -180,6 +180,10 @@ public:
         return "quadratic penalty E + kappa/2 |c|^2 by projected Newton, kappa continuation; bounds, equalities";
     }
     std::vector<OptionDeclaration> declared_options() const override { return outer_options("1e2", "10"); }
+    std::map<std::string, std::vector<OptionDeclaration>> nested_options() const override
+    {
+        return {{"inner", newton_option_declarations()}};
+    }
     std::optional<std::string> refusal(const Nlp& nlp) const override { return refuse_inequalities(name(), nlp); }
     void check_options(const SolverOptions& options) const override
     {
@@ -200,6 +204,10 @@ public:
                "equalities";
     }
     std::vector<OptionDeclaration> declared_options() const override { return outer_options("10", "10"); }
+    std::map<std::string, std::vector<OptionDeclaration>> nested_options() const override
+    {
+        return {{"inner", newton_option_declarations()}};
+    }
     std::optional<std::string> refusal(const Nlp& nlp) const override { return refuse_inequalities(name(), nlp); }
     void check_options(const SolverOptions& options) const override
     {

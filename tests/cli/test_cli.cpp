@@ -2,6 +2,8 @@
 // and the result file.
 #include "run_sinew.hpp"
 
+#include "sinew/solvers/solver.hpp"
+
 #include <catch2/catch.hpp>
 
 using namespace sinew::test;
@@ -113,4 +115,22 @@ TEST_CASE("every subcommand has --help")
         CHECK(run.exit_code == 0);
         CHECK(run.out.find("Usage") != std::string::npos);
     }
+}
+
+TEST_CASE("sinew list --solver prints every declared option with its range and default, nested ones prefixed")
+{
+    for (const auto& solver : sinew::all_solvers()) {
+        const Run run = run_sinew("list --solver " + solver->name());
+        CAPTURE(solver->name(), run.out, run.err);
+        REQUIRE(run.exit_code == 0);
+        for (const sinew::OptionDeclaration& d : solver->declared_options())
+            CHECK(run.out.find("  " + d.name + " (") != std::string::npos);
+        for (const auto& [prefix, nested] : solver->nested_options()) {
+            CHECK(run.out.find("--option " + prefix + ".name=value") != std::string::npos);
+            for (const sinew::OptionDeclaration& d : nested)
+                CHECK(run.out.find("  " + d.name + " (") != std::string::npos);
+        }
+    }
+    const Run penalty = run_sinew("list --solver penalty");
+    CHECK(penalty.out.find("kappa (real, (0, 1e+20], default 1e2)") != std::string::npos);
 }
