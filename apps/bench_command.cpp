@@ -4,6 +4,7 @@
 #include "result_json.hpp"
 
 #include "sinew/bench/kernel_benchmark.hpp"
+#include "sinew/bench/performance_profile.hpp"
 #include "sinew/bench/reference_check.hpp"
 #include "sinew/core/input_error.hpp"
 #include "sinew/problems/builtin_problems.hpp"
@@ -14,6 +15,7 @@
 #include <cstdio>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <memory>
 
 namespace sinew::cli {
@@ -46,56 +48,126 @@ bool contains(const std::vector<std::string>& list, const std::string& name)
     return list.empty() || std::find(list.begin(), list.end(), name) != list.end();
 }
 
-/// Every built-in problem of the chosen suite × every solver that accepts it,
+/// One column of the bench: a solver with backend options of its own (relaxed
+/// KKT at two stiffnesses), labelled for the tables.
+struct Strategy {
+    std::string label;
+    std::string solver;
+    std::map<std::string, std::string> backend;
+};
+
+/// The solvers suite constrained compares (unless --solver chooses): those
+/// for equality constraints and bounds.
+const std::vector<std::string> kConstrainedStrategies = {
+    "ipopt", "nlopt-slsqp", "nlopt-auglag", "kkt-newton", "relaxed-kkt", "penalty", "augmented-lagrangian"};
+
+/// Every solver chosen, once; relaxed-kkt at κ = 1e4 and 1e8 in suite
+/// constrained, where its finite-κ violation is what the comparison shows.
+std::vector<Strategy> bench_strategies(const BenchFlags& flags)
+{
+    std::vector<Strategy> strategies;
+    for (const auto& solver : all_solvers()) {
+        if (!contains(flags.solvers, solver->name()))
+            continue;
+        if (flags.solvers.empty() && flags.suite == "constrained" &&
+            !contains(kConstrainedStrategies, solver->name()))
+            continue;
+        if (solver->name() == "relaxed-kkt" && flags.suite == "constrained") {
+            strategies.push_back({"relaxed-kkt κ=1e4", solver->name(), {{"kappa", "1e4"}}});
+            strategies.push_back({"relaxed-kkt κ=1e8", solver->name(), {{"kappa", "1e8"}}});
+        } else {
+            strategies.push_back({solver->name(), solver->name(), {}});
+        }
+    }
+    return strategies;
+}
+
+/// Suite constrained holds every Hock-Schittkowski problem with constraints or
+/// bounds: its own and the constrained ones of suite classic.
+bool in_suite(const BuiltinProblem& problem, const std::string& suite)
+{
+    if (suite == "all" || problem.suite == suite)
+        return true;
+    return suite == "constrained" && problem.suite == "classic" && problem.name.rfind("hs", 0) == 0;
+}
+
+/// Iterations and time of each strategy on each problem (unsolved or
+/// refused: +∞), for the performance profiles.
+struct ProfileData {
+    std::vector<StrategyCosts> iterations, time;
+};
+
+std::string newton_row(const std::string& problem, const std::string& strategy, const Result& result)
+{
+    // Newton's own accounting against the direct-solver limit:
+    // total ≥ iterations × one numeric factorization.
+    const auto& st = result.statistics;
+    const double one_factorization = st.at("factorization_s") / st.at("factorizations");
+    return "| " + problem + " | " + strategy + " | " + std::to_string(result.iterations) + " | " +
+           format("%.0f", st.at("factorizations")) + " | " + format("%.4f", st.at("assembly_s") / result.iterations) +
+           " | " + format("%.4f", one_factorization) + " | " + format("%.3f", result.time_s) + " | " +
+           format("%.2f", result.time_s / (result.iterations * one_factorization)) + " |";
+}
+
+/// Every built-in problem of the chosen suite × every strategy that accepts it,
 /// as a markdown table; true when every run reached its reference.
 bool run_problems(const BenchFlags& flags, const SolverOptions& options, nlohmann::json& runs)
 {
-    std::cout << "| problem | solver | status | iterations | objective | f* rel. error | constraint violation "
-                 "| KKT residual | time (s) | reached f* |\n"
-              << "|---|---|---|---:|---:|---:|---:|---:|---:|---|\n";
-    std::vector<std::string> skipped;
-    std::vector<std::string> newton_rows;
+    std::cout << "| problem | solver | status | iterations | factorizations | objective | f* rel. error "
+                 "| constraint violation | KKT residual | time (s) | reached f* |\n"
+              << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
+    const std::vector<Strategy> strategies = bench_strategies(flags);
+    std::vector<std::string> skipped, newton_rows;
+    ProfileData profile;
+    for (const Strategy& s : strategies) {
+        profile.iterations.push_back({s.label, {}});
+        profile.time.push_back({s.label, {}});
+    }
     bool all_good = true;
     for (const auto& problem : builtin_problems()) {
-        if ((flags.suite != "all" && problem.suite != flags.suite) || !contains(flags.problems, problem.name))
+        if (!in_suite(problem, flags.suite) || !contains(flags.problems, problem.name))
             continue;
-        for (const auto& solver : all_solvers()) {
-            if (!contains(flags.solvers, solver->name()))
-                continue;
+        std::vector<double> iterations, times;
+        for (const Strategy& strategy : strategies) {
             const std::unique_ptr<Nlp> nlp = problem.make();
-            if (const auto why = solver->refusal(*nlp)) {
-                skipped.push_back(problem.name + " × " + solver->name() + ": " + *why);
+            if (const auto why = find_solver(strategy.solver).refusal(*nlp)) {
+                skipped.push_back(problem.name + " × " + strategy.label + ": " + *why);
+                iterations.push_back(kUnsolved);
+                times.push_back(kUnsolved);
                 continue;
             }
-            const Result result = solve(*nlp, solver->name(), options);
+            SolverOptions run_options = options;
+            for (const auto& [key, value] : strategy.backend)
+                run_options.backend[key] = value;
+            const Result result = solve(*nlp, strategy.solver, run_options);
             const double error = optimum_error(problem, result);
             const bool good = reaches_reference(problem, result, flags.reference);
             all_good = all_good && good;
-            std::cout << "| " << problem.name << " | " << solver->name() << " | " << to_string(result.status)
-                      << " | " << result.iterations << " | " << format("%.10g", result.objective) << " | "
-                      << format("%.1e", error) << " | " << format("%.1e", result.constraint_violation) << " | "
-                      << format("%.1e", result.kkt_residual) << " | " << format("%.4f", result.time_s) << " | "
-                      << (good ? "yes" : "no") << " |" << std::endl;
             const auto& st = result.statistics;
-            if (st.count("factorizations") && st.at("factorizations") > 0 && result.iterations > 0) {
-                // Newton's own accounting against the direct-solver limit:
-                // total ≥ iterations × one numeric factorization.
-                const double one_factorization = st.at("factorization_s") / st.at("factorizations");
-                newton_rows.push_back("| " + problem.name + " | " + solver->name() + " | " +
-                                      std::to_string(result.iterations) + " | " +
-                                      format("%.0f", st.at("factorizations")) + " | " +
-                                      format("%.4f", st.at("assembly_s") / result.iterations) + " | " +
-                                      format("%.4f", one_factorization) + " | " + format("%.3f", result.time_s) +
-                                      " | " + format("%.2f", result.time_s / (result.iterations * one_factorization)) +
-                                      " |");
-            }
+            const bool factorized = st.count("factorizations") && st.at("factorizations") > 0;
+            std::cout << "| " << problem.name << " | " << strategy.label << " | " << to_string(result.status)
+                      << " | " << result.iterations << " | "
+                      << (factorized ? format("%.0f", st.at("factorizations")) : "-") << " | "
+                      << format("%.10g", result.objective) << " | " << format("%.1e", error) << " | "
+                      << format("%.1e", result.constraint_violation) << " | " << format("%.1e", result.kkt_residual)
+                      << " | " << format("%.4f", result.time_s) << " | " << (good ? "yes" : "no") << " |"
+                      << std::endl;
+            if (factorized && result.iterations > 0)
+                newton_rows.push_back(newton_row(problem.name, strategy.label, result));
+            iterations.push_back(good ? result.iterations : kUnsolved);
+            times.push_back(good ? result.time_s : kUnsolved);
             nlohmann::json run = to_json(result);
             run["suite"] = problem.suite;
+            run["strategy"] = strategy.label;
             run["reference_objective"] =
                 problem.reference_objective ? number(*problem.reference_objective) : nlohmann::json();
             run["optimum_relative_error"] = number(error);
             run["reached_reference"] = good;
             runs.push_back(run);
+        }
+        for (size_t s = 0; s < strategies.size(); ++s) {
+            profile.iterations[s].costs.push_back(iterations[s]);
+            profile.time[s].costs.push_back(times[s]);
         }
     }
     if (!newton_rows.empty()) {
@@ -104,6 +176,13 @@ bool run_problems(const BenchFlags& flags, const SolverOptions& options, nlohman
                   << "|---|---|---:|---:|---:|---:|---:|---:|\n";
         for (const auto& row : newton_rows)
             std::cout << row << "\n";
+    }
+    if (strategies.size() > 1 && !profile.iterations.front().costs.empty()) {
+        const std::vector<double> taus = {1, 2, 4, 8, 16};
+        std::cout << "\nDolan-Moré performance profile ρ(τ) over the " << profile.iterations.front().costs.size()
+                  << " problems (solved: reached f*; refused or not solved counts as unsolved), iterations:\n\n"
+                  << performance_profile_table(profile.iterations, taus) << "\ntime:\n\n"
+                  << performance_profile_table(profile.time, taus);
     }
     if (!skipped.empty())
         std::cout << "\n";

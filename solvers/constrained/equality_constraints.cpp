@@ -31,6 +31,9 @@ void EqualityConstraints::transpose_times(const Eigen::VectorXd& values, const E
 std::optional<std::string> refuse_inequalities(const std::string& solver, const Nlp& nlp)
 {
     const NlpCapabilities kind = capabilities_of(nlp);
+    if (kind.unconstrained())
+        return solver + " is a strategy for constraints and bounds, and this problem has neither; use "
+                        "projected-newton";
     if (kind.has_inequalities)
         return solver + " takes equality constraints and bounds only (this problem has " + kind.describe() +
                "); use ipopt for inequality constraints";

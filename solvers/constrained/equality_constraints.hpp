@@ -28,7 +28,9 @@ private:
 };
 
 /// Why a strategy for equality constraints and bounds cannot take `nlp`
-/// (inequality constraints), naming Ipopt; nothing when it can.
+/// (inequality constraints: naming Ipopt; neither constraints nor bounds:
+/// naming projected Newton, the same Newton without the strategy); nothing
+/// when it can.
 std::optional<std::string> refuse_inequalities(const std::string& solver, const Nlp& nlp);
 
 } // namespace sinew
