@@ -1,5 +1,6 @@
 #pragma once
 #include "sinew/core/projection.hpp"
+#include "sinew/core/sparsity_pattern.hpp"
 
 #include <Eigen/Core>
 
@@ -8,19 +9,6 @@
 #include <vector>
 
 namespace sinew {
-
-/// Positions of the nonzeros of a sparse matrix, as (row, col) pairs, fixed at
-/// setup. Values are passed separately, in the same order.
-struct SparsityPattern {
-    std::vector<int> rows;
-    std::vector<int> cols;
-    int nonzeros() const { return static_cast<int>(rows.size()); }
-    void add(int row, int col)
-    {
-        rows.push_back(row);
-        cols.push_back(col);
-    }
-};
 
 /// A bound at or beyond this magnitude means "no bound" (Ipopt's convention).
 constexpr double kInfinity = std::numeric_limits<double>::infinity();

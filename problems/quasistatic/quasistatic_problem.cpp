@@ -2,6 +2,7 @@
 
 #include "sinew/core/input_error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -56,27 +57,62 @@ QuasistaticProblem::QuasistaticProblem(const Eigen::MatrixXd& rest_positions,
     full_gradient_.resize(rest_.size());
 
     // The potential's Hessian pattern restricted to the variables, mapped once.
+    variable_of_.assign(static_cast<std::size_t>(rest_.size()), -1);
+    if (eliminating())
+        for (int k = 0; k < static_cast<int>(free_coordinates_.size()); ++k)
+            variable_of_[free_coordinates_[k]] = k;
+    else
+        for (int i = 0; i < static_cast<int>(rest_.size()); ++i)
+            variable_of_[i] = i;
     const HessianPattern& full = potential_->hessian_pattern();
     full_hessian_.resize(full.nonzeros());
-    if (eliminating()) {
-        std::vector<int> variable_of(static_cast<std::size_t>(rest_.size()), -1);
-        for (int k = 0; k < static_cast<int>(free_coordinates_.size()); ++k)
-            variable_of[free_coordinates_[k]] = k;
-        for (int entry = 0; entry < full.nonzeros(); ++entry) {
-            const int row = variable_of[full.rows()[entry]];
-            const int col = variable_of[full.cols()[entry]];
-            if (row >= 0 && col >= 0) {
-                hessian_pattern_.add(row, col);
-                hessian_entries_.push_back(entry);
-            }
-        }
-    } else {
-        for (int entry = 0; entry < full.nonzeros(); ++entry) {
-            hessian_pattern_.add(full.rows()[entry], full.cols()[entry]);
+    for (int entry = 0; entry < full.nonzeros(); ++entry) {
+        const int row = variable_of_[full.rows()[entry]];
+        const int col = variable_of_[full.cols()[entry]];
+        if (row >= 0 && col >= 0) {
+            hessian_pattern_.add(row, col);
             hessian_entries_.push_back(entry);
         }
+    }
+    if (!eliminating()) {
+        Eigen::VectorXd targets(num_prescribed_coordinates());
         for (int k = 0; k < num_prescribed_coordinates(); ++k)
-            jacobian_pattern_.add(k, prescribed_coordinates_[k]);
+            targets[k] = prescribed_[prescribed_coordinates_[k]];
+        dirichlet_constraints_ = std::make_shared<PrescribedCoordinates>(prescribed_coordinates_, targets);
+        constraint_sets_.push_back(dirichlet_constraints_);
+    }
+    for (const auto& set : options_.constraints) {
+        if (!set)
+            throw InputError(who + "a constraint set is null");
+        constraint_sets_.push_back(set);
+    }
+    map_constraint_sets();
+}
+
+void QuasistaticProblem::map_constraint_sets()
+{
+    // Variables are in coordinate order, so a lower-triangle entry stays one.
+    int offset = 0;
+    for (int s = 0; s < static_cast<int>(constraint_sets_.size()); ++s) {
+        ConstraintSet& set = *constraint_sets_[s];
+        constraint_offsets_.push_back(offset);
+        const SparsityPattern& jacobian = set.jacobian_pattern();
+        for (int entry = 0; entry < jacobian.nonzeros(); ++entry)
+            if (const int col = variable_of_[jacobian.cols[entry]]; col >= 0) {
+                jacobian_pattern_.add(offset + jacobian.rows[entry], col);
+                jacobian_entries_.emplace_back(s, entry);
+            }
+        const SparsityPattern& hessian = set.hessian_pattern();
+        for (int entry = 0; entry < hessian.nonzeros(); ++entry) {
+            const int row = variable_of_[hessian.rows[entry]];
+            const int col = variable_of_[hessian.cols[entry]];
+            if (row >= 0 && col >= 0) {
+                hessian_pattern_.add(row, col);
+                constraint_hessian_entries_.emplace_back(s, entry);
+            }
+        }
+        set_values_.emplace_back(std::max({set.num_constraints(), jacobian.nonzeros(), hessian.nonzeros()}));
+        offset += set.num_constraints();
     }
 }
 
@@ -97,6 +133,12 @@ void QuasistaticProblem::apply_set(const DirichletSet& s, int set)
     prescribed_ = updated;
     for (int i : prescribed_coordinates_)
         full_x_[i] = prescribed_[i];
+    if (dirichlet_constraints_) {
+        Eigen::VectorXd targets(num_prescribed_coordinates());
+        for (int k = 0; k < num_prescribed_coordinates(); ++k)
+            targets[k] = prescribed_[prescribed_coordinates_[k]];
+        dirichlet_constraints_->set_targets(targets);
+    }
 }
 
 int QuasistaticProblem::num_variables() const
@@ -104,7 +146,13 @@ int QuasistaticProblem::num_variables() const
     return eliminating() ? static_cast<int>(free_coordinates_.size()) : static_cast<int>(rest_.size());
 }
 
-int QuasistaticProblem::num_constraints() const { return eliminating() ? 0 : num_prescribed_coordinates(); }
+int QuasistaticProblem::num_constraints() const
+{
+    int count = 0;
+    for (const auto& set : constraint_sets_)
+        count += set->num_constraints();
+    return count;
+}
 
 void QuasistaticProblem::constraint_bounds(VectorRef lower, VectorRef upper) const
 {
@@ -146,34 +194,57 @@ void QuasistaticProblem::gradient(ConstVectorRef x, VectorRef grad)
 
 void QuasistaticProblem::constraints(ConstVectorRef x, VectorRef c)
 {
-    for (int k = 0; k < num_constraints(); ++k)
-        c[k] = x[prescribed_coordinates_[k]] - prescribed_[prescribed_coordinates_[k]];
+    const Eigen::VectorXd& configuration = configuration_of(x);
+    for (int s = 0; s < static_cast<int>(constraint_sets_.size()); ++s)
+        constraint_sets_[s]->values(configuration, c.segment(constraint_offsets_[s], constraint_sets_[s]->num_constraints()));
 }
 
-void QuasistaticProblem::jacobian_values(ConstVectorRef, VectorRef values) { values.setOnes(); }
-
-void QuasistaticProblem::fill_hessian(ConstVectorRef x, Projection projection, double sigma, VectorRef values)
+void QuasistaticProblem::jacobian_values(ConstVectorRef x, VectorRef values)
 {
+    const Eigen::VectorXd& configuration = configuration_of(x);
+    for (int s = 0; s < static_cast<int>(constraint_sets_.size()); ++s)
+        constraint_sets_[s]->jacobian_values(configuration, set_values_[s]);
+    for (int k = 0; k < static_cast<int>(jacobian_entries_.size()); ++k)
+        values[k] = set_values_[jacobian_entries_[k].first][jacobian_entries_[k].second];
+}
+
+void QuasistaticProblem::fill_hessian(ConstVectorRef x, Projection projection, double sigma, ConstVectorRef lambda,
+                                      VectorRef values)
+{
+    const Eigen::VectorXd& configuration = configuration_of(x);
+    const int potential_entries = static_cast<int>(hessian_entries_.size());
     if (sigma == 0.0) {
-        values.setZero();
-        return;
+        values.head(potential_entries).setZero();
+    } else {
+        potential_->hessian_values(configuration, projection, full_hessian_);
+        for (int k = 0; k < potential_entries; ++k)
+            values[k] = sigma * full_hessian_[hessian_entries_[k]];  // σ∇²E
     }
-    potential_->hessian_values(configuration_of(x), projection, full_hessian_);
-    for (int k = 0; k < static_cast<int>(hessian_entries_.size()); ++k)
-        values[k] = sigma * full_hessian_[hessian_entries_[k]];
+    if (constraint_hessian_entries_.empty())
+        return;
+    for (int s = 0; s < static_cast<int>(constraint_sets_.size()); ++s) {
+        ConstraintSet& set = *constraint_sets_[s];
+        if (set.hessian_pattern().nonzeros() > 0)
+            set.hessian_values(configuration, lambda.segment(constraint_offsets_[s], set.num_constraints()),
+                               projection, set_values_[s]);  // Σᵢ λᵢ∇²cᵢ
+    }
+    for (int k = 0; k < static_cast<int>(constraint_hessian_entries_.size()); ++k)
+        values[potential_entries + k] =
+            set_values_[constraint_hessian_entries_[k].first][constraint_hessian_entries_[k].second];
 }
 
-void QuasistaticProblem::hessian_values(ConstVectorRef x, double sigma, ConstVectorRef, VectorRef values)
+void QuasistaticProblem::hessian_values(ConstVectorRef x, double sigma, ConstVectorRef lambda, VectorRef values)
 {
-    fill_hessian(x, Projection::none, sigma, values);
+    fill_hessian(x, Projection::none, sigma, lambda, values);
 }
 
-void QuasistaticProblem::projected_hessian_values(ConstVectorRef x, double sigma, ConstVectorRef, VectorRef values)
+void QuasistaticProblem::projected_hessian_values(ConstVectorRef x, double sigma, ConstVectorRef lambda,
+                                                  VectorRef values)
 {
     // σ·clamp(H_e) = clamp(σH_e) holds for σ ≥ 0 only.
     if (sigma < 0.0)
         throw std::logic_error("projected Hessian of " + options_.name + " needs sigma >= 0");
-    fill_hessian(x, Projection::clamp, sigma, values);
+    fill_hessian(x, Projection::clamp, sigma, lambda, values);
 }
 
 void QuasistaticProblem::set_affine_map(int set, const Eigen::MatrixXd& map, const Eigen::VectorXd& translation)

@@ -1,4 +1,6 @@
 #pragma once
+#include "sinew/energies/constraints/constraint_set.hpp"
+#include "sinew/energies/constraints/prescribed_coordinates.hpp"
 #include "sinew/energies/potentials/total_potential.hpp"
 #include "sinew/problems/nlp.hpp"
 #include "sinew/problems/quasistatic/dirichlet_set.hpp"
@@ -16,7 +18,8 @@ enum class DirichletStrategy {
     eliminate,
     /// The variables are all coordinates, with one linear equality
     /// c_k(x) = x_{i_k} − x̄_{i_k} = 0 per prescribed coordinate (a unit row of
-    /// the Jacobian). For comparing constraint strategies on the same problem.
+    /// the Jacobian): the constraint set PrescribedCoordinates, the first of
+    /// the problem's sets. For comparing constraint strategies on the same problem.
     equality_constraints,
 };
 
@@ -26,14 +29,22 @@ std::string to_string(DirichletStrategy strategy);
 struct QuasistaticOptions {
     DirichletStrategy dirichlet = DirichletStrategy::eliminate;
     std::string name = "quasistatic";
+    /// Further equality constraints on the node positions (inextensibility,
+    /// threads, …), after the Dirichlet set when there is one. Under
+    /// elimination their Jacobian columns and Hessian entries on prescribed
+    /// coordinates are dropped (those coordinates are constants).
+    std::vector<std::shared_ptr<ConstraintSet>> constraints;
 };
 
 /// Quasistatic equilibrium as an NLP (seed 000 §3, §4.5: zero net force is
 /// stationarity of the total potential):
 ///
 ///     minimize E(x) over the free coordinates,   x_i = M_s X_i + t_s on Dirichlet set s,
+///     subject to c(x) = 0 for each constraint set,
 ///
 /// E the total potential (elastic + gravity + loads + obstacle penalties).
+/// The Hessian of the Lagrangian is σ∇²E + Σ_sets Σᵢ λᵢ∇²cᵢ, each term
+/// projected under Projection::clamp.
 /// The Hessian pattern is E's pattern restricted to the variables (mapped
 /// once at construction); the objective's PSD-projected Hessian is offered
 /// (supports(Projection::clamp)) for projected Newton.
@@ -90,9 +101,9 @@ public:
     const Eigen::VectorXd& prescribed_configuration() const { return prescribed_; }
 
 protected:
-    /// σ∇²E (the constraints are linear: no λ terms).
+    /// σ∇²E + Σ λᵢ∇²cᵢ.
     void hessian_values(ConstVectorRef x, double sigma, ConstVectorRef lambda, VectorRef values) override;
-    /// σ∇²E with each element's term projected (σ ≥ 0).
+    /// The same with each element's term and each λᵢ∇²cᵢ projected (σ ≥ 0).
     void projected_hessian_values(ConstVectorRef x, double sigma, ConstVectorRef lambda, VectorRef values) override;
 
 private:
@@ -102,7 +113,9 @@ private:
     void apply_set(const DirichletSet& s, int set);
     /// full_x_ for the variables x (elimination: free entries replaced).
     const Eigen::VectorXd& configuration_of(ConstVectorRef x);
-    void fill_hessian(ConstVectorRef x, Projection projection, double sigma, VectorRef values);
+    void fill_hessian(ConstVectorRef x, Projection projection, double sigma, ConstVectorRef lambda, VectorRef values);
+    /// Maps every constraint set's Jacobian and Hessian entries to the variables, once.
+    void map_constraint_sets();
 
     QuasistaticOptions options_;
     std::shared_ptr<TotalPotential> potential_;
@@ -115,6 +128,14 @@ private:
     SparsityPattern hessian_pattern_;
     std::vector<int> hessian_entries_;  ///< for each NLP Hessian nonzero, its index in the potential's pattern
     SparsityPattern jacobian_pattern_;
+    std::shared_ptr<PrescribedCoordinates> dirichlet_constraints_;  ///< equality strategy only
+    std::vector<std::shared_ptr<ConstraintSet>> constraint_sets_;    ///< Dirichlet first, then options_.constraints
+    std::vector<int> constraint_offsets_;                            ///< first row of each set
+    std::vector<int> variable_of_;  ///< NLP variable of each coordinate (−1: eliminated)
+    /// (set, entry of the set's pattern) for each NLP Jacobian entry, and each
+    /// constraint entry appended to the NLP Hessian pattern.
+    std::vector<std::pair<int, int>> jacobian_entries_, constraint_hessian_entries_;
+    std::vector<Eigen::VectorXd> set_values_;  ///< scratch per set: c, J or Hessian values
     Eigen::VectorXd full_x_;         ///< scratch: the configuration being evaluated
     Eigen::VectorXd full_gradient_;  ///< scratch
     Eigen::VectorXd full_hessian_;   ///< scratch, the potential's pattern

@@ -1,0 +1,40 @@
+#pragma once
+#include "sinew/core/projection.hpp"
+#include "sinew/core/sparsity_pattern.hpp"
+
+#include <Eigen/Core>
+
+#include <string>
+
+namespace sinew {
+
+/// The constraint counterpart of a Potential (DESIGN.md, "Constraints"): a
+/// block of equality constraints c(x) = 0 on the node positions x
+/// (node-major, all coordinates), with its Jacobian and its contribution
+/// Σᵢ λᵢ∇²cᵢ to the Hessian of the Lagrangian. Both patterns are fixed at
+/// construction; evaluations fill values only. Dirichlet conditions as
+/// equalities, inextensibility and orthogonality are constraint sets; an NLP
+/// composes potentials and constraint sets.
+class ConstraintSet {
+public:
+    using VectorRef = Eigen::Ref<Eigen::VectorXd>;
+    using ConstVectorRef = Eigen::Ref<const Eigen::VectorXd>;
+
+    virtual ~ConstraintSet() = default;
+
+    virtual std::string name() const = 0;
+    virtual int num_constraints() const = 0;
+    /// c(x), one entry per constraint of the set.
+    virtual void values(ConstVectorRef x, VectorRef c) = 0;
+    /// (constraint of the set, coordinate) of each Jacobian entry.
+    virtual const SparsityPattern& jacobian_pattern() const = 0;
+    virtual void jacobian_values(ConstVectorRef x, VectorRef values) = 0;
+    /// Lower triangle (row ≥ col, coordinates) of Σᵢ λᵢ∇²cᵢ; empty when c is linear.
+    virtual const SparsityPattern& hessian_pattern() const = 0;
+    /// Σᵢ λᵢ∇²cᵢ in hessian_pattern()'s order; with Projection::clamp each
+    /// term λᵢ∇²cᵢ is projected onto the PSD cone before the sum.
+    virtual void hessian_values(ConstVectorRef x, ConstVectorRef lambda, Projection projection,
+                                VectorRef values) = 0;
+};
+
+} // namespace sinew
