@@ -1,13 +1,15 @@
 #include "cli_options.hpp"
 #include "commands.hpp"
-#include "output_file.hpp"
-#include "result_json.hpp"
+#include "sinew/runs/output_file.hpp"
+#include "sinew/runs/result_json.hpp"
 
 #include "sinew/bench/kernel_benchmark.hpp"
 #include "sinew/bench/performance_profile.hpp"
 #include "sinew/bench/reference_check.hpp"
 #include "sinew/core/input_error.hpp"
 #include "sinew/problems/builtin_problems.hpp"
+#include "sinew/problems/quasistatic/builtin_scenes.hpp"
+#include "sinew/runs/scene_runner.hpp"
 #include "sinew/solvers/solver.hpp"
 
 #include <algorithm>
@@ -97,6 +99,21 @@ struct ProfileData {
     std::vector<StrategyCosts> iterations, time;
 };
 
+/// One run: a built-in scene through the scene runner (the one way a scene
+/// is run), any other problem through solve().
+Result run_strategy(const BuiltinProblem& problem, const std::string& solver, const SolverOptions& options)
+{
+    if (problem.scene.empty()) {
+        const std::unique_ptr<Nlp> nlp = problem.make();
+        return solve(*nlp, solver, options);
+    }
+    Scene scene = make_builtin_scene(problem.scene);
+    SceneRunRequest request;
+    request.solver = solver;
+    request.options = options;
+    return run_scene(scene, resolve_scene_run(scene, request).settings).last;
+}
+
 std::string newton_row(const std::string& problem, const std::string& strategy, const Result& result)
 {
     // Newton's own accounting against the direct-solver limit:
@@ -139,7 +156,7 @@ bool run_problems(const BenchFlags& flags, const SolverOptions& options, nlohman
             SolverOptions run_options = options;
             for (const auto& [key, value] : strategy.backend)
                 run_options.backend[key] = value;
-            const Result result = solve(*nlp, strategy.solver, run_options);
+            const Result result = run_strategy(problem, strategy.solver, run_options);
             const double error = optimum_error(problem, result);
             const bool good = reaches_reference(problem, result, flags.reference);
             all_good = all_good && good;

@@ -1,7 +1,7 @@
 // sinew energy: evaluate one constitutive model at one deformation gradient.
 #include "cli_options.hpp"
 #include "commands.hpp"
-#include "result_json.hpp"
+#include "sinew/runs/result_json.hpp"
 
 #include "sinew/core/input_error.hpp"
 #include "sinew/core/parse_number.hpp"

@@ -1,8 +1,8 @@
 #include "cli_options.hpp"
 #include "commands.hpp"
-#include "output_file.hpp"
-#include "result_json.hpp"
-#include "scene_run.hpp"
+#include "sinew/runs/output_file.hpp"
+#include "sinew/runs/result_json.hpp"
+#include "sinew/runs/scene_runner.hpp"
 
 #include "sinew/core/input_error.hpp"
 #include "sinew/problems/builtin_problems.hpp"
@@ -11,6 +11,7 @@
 #include "sinew/solvers/solver.hpp"
 
 #include <filesystem>
+#include <iostream>
 #include <limits>
 #include <memory>
 
@@ -20,19 +21,6 @@ namespace {
 bool is_scene_file(const std::string& problem)
 {
     return std::filesystem::path(problem).extension() == ".json";
-}
-
-/// The scene's own solver name and options, checked alone before they are
-/// merged with the command line's, so that an error in them names the scene
-/// file and its "solver" key.
-void check_scene_solver(const Scene& scene, SolverOptions options)
-{
-    options.backend = scene.solver.options;
-    try {
-        find_solver(scene.solver.name).check_options(options);
-    } catch (const InputError& e) {
-        throw InputError((scene.solver.source.empty() ? scene.name : scene.solver.source) + ": " + e.what());
-    }
 }
 
 } // namespace
@@ -74,8 +62,8 @@ void add_solve_command(CLI::App& app, int& exit_code)
             check_writable(flags->json);  // fail on a bad path before the solve, not after
         const bool scene_file = is_scene_file(flags->problem);
         const BuiltinProblem* builtin = scene_file ? nullptr : &find_builtin_problem(flags->problem);
-        const bool scene_output = scene_file || (!builtin->scene.empty() && !flags->output.empty());
-        if (!scene_output) {
+        const bool is_scene = scene_file || !builtin->scene.empty();
+        if (!is_scene) {
             if (command->count("--load-steps") > 0)
                 throw InputError("--load-steps applies to scenes only ('" + flags->problem + "' is not one)");
             const std::unique_ptr<Nlp> nlp = builtin->make();
@@ -87,25 +75,26 @@ void add_solve_command(CLI::App& app, int& exit_code)
         }
 
         Scene scene = scene_file ? read_scene_file(flags->problem) : make_builtin_scene(builtin->scene);
-        // Precedence: command line, then the scene's settings, then defaults.
-        SceneRunSettings settings;
-        settings.solver = command->count("--solver") > 0 ? flags->solver : scene.solver.name;
-        if (scene.solver.tolerance && command->count("--tol") == 0)
-            options.tolerance = *scene.solver.tolerance;
-        if (scene.solver.max_iterations && command->count("--max-iter") == 0)
-            options.max_iterations = *scene.solver.max_iterations;
-        if (settings.solver == scene.solver.name) {
-            check_scene_solver(scene, options);
-            for (const auto& [key, value] : scene.solver.options)
-                options.backend.emplace(key, value);  // --option key=value wins
-        }
-        settings.options = options;
-        settings.load_steps = command->count("--load-steps") > 0 ? flags->load_steps : scene.load_steps;
-        settings.folder = !flags->output.empty()          ? flags->output
-                          : !scene.output.folder.empty() ? scene.output.folder
-                                                          : scene.name + "-output";
-        settings.vtu = scene.output.vtu;
-        const SceneRunOutcome outcome = run_scene(scene, settings);
+        SceneRunRequest request;
+        request.options = options;
+        if (command->count("--solver") > 0)
+            request.solver = flags->solver;
+        if (command->count("--tol") > 0)
+            request.tolerance = options.tolerance;
+        if (command->count("--max-iter") > 0)
+            request.max_iterations = options.max_iterations;
+        if (command->count("--load-steps") > 0)
+            request.load_steps = flags->load_steps;
+        // A scene file writes into its output folder (default <name>-output);
+        // a built-in scene only where --output says.
+        request.folder = !flags->output.empty() || !scene_file || !scene.output.folder.empty()
+                             ? flags->output
+                             : scene.name + "-output";
+        const ResolvedSceneRun run = resolve_scene_run(scene, request);
+        check_solve(*scene.problem, run.settings.solver, run.settings.options);
+        for (const std::string& note : run.notes)
+            std::cerr << "sinew: note: " << note << "\n";
+        const SceneRunOutcome outcome = run_scene(scene, run.settings);
         if (!flags->json.empty())
             write_text_file(flags->json, to_json(outcome.last).dump(2) + "\n");
         exit_code = outcome.converged ? 0 : 3;

@@ -121,3 +121,40 @@ TEST_CASE("a missing scene file is one line and exit code 2")
     CHECK(lines(run.err) == 1);
     CHECK(run.err.find("/no/such/scene.json") != std::string::npos);
 }
+
+TEST_CASE("a solver given on the command line that differs from the scene's says which scene options it ignores")
+{
+    const std::string scene = write_beam_scene("beam_solver_options.json", R"(,
+  "solver": {"name": "projected-newton", "options": {"armijo": "0.001", "max_backtracks": "30"}})");
+    const std::string folder = scratch("beam_solver_options_out");
+    std::filesystem::remove_all(folder);
+    const Run replaced = run_sinew("solve '" + scene + "' --solver ipopt --output '" + folder + "' --verbosity 0");
+    CAPTURE(replaced.out, replaced.err);
+    CHECK(replaced.exit_code == 0);
+    CHECK(replaced.err.find("note: solver ipopt replaces the scene's projected-newton; its options (armijo=0.001, "
+                            "max_backtracks=30) are not passed to ipopt") != std::string::npos);
+
+    const Run overridden =
+        run_sinew("solve '" + scene + "' --option armijo=0.01 --output '" + folder + "' --verbosity 0");
+    CAPTURE(overridden.out, overridden.err);
+    CHECK(overridden.exit_code == 0);
+    CHECK(overridden.err.find("note: option armijo=0.01 overrides") != std::string::npos);
+    CHECK(read_json(folder + "/result.json")["solver"] == "projected-newton");
+}
+
+TEST_CASE("a built-in scene runs the same way with and without an output folder")
+{
+    const std::string folder = scratch("qr_plate_out");
+    std::filesystem::remove_all(folder);
+    const std::string plain = scratch("qr_plate_plain.json");
+    const std::string written = scratch("qr_plate_written.json");
+    const Run without = run_sinew("solve qr-plate --verbosity 0 --json '" + plain + "'");
+    const Run with = run_sinew("solve qr-plate --verbosity 0 --json '" + written + "' --output '" + folder + "'");
+    CAPTURE(without.err, with.err);
+    REQUIRE(without.exit_code == 0);
+    REQUIRE(with.exit_code == 0);
+    CHECK(read_json(plain)["x"] == read_json(written)["x"]);
+    CHECK(read_json(plain)["iterations"] == read_json(written)["iterations"]);
+    CHECK(read_json(plain)["solver"] == "projected-newton");  // the scene's solver, as with --output
+    CHECK(std::filesystem::exists(folder + "/result.vtu"));
+}

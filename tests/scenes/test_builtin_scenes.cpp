@@ -6,6 +6,7 @@
 #include "sinew/problems/quasistatic/builtin_scene_files.hpp"
 #include "sinew/problems/quasistatic/builtin_scenes.hpp"
 #include "sinew/problems/quasistatic/scene_reader.hpp"
+#include "sinew/runs/scene_runner.hpp"
 #include "sinew/solvers/solver.hpp"
 
 #include <catch2/catch.hpp>
@@ -28,10 +29,11 @@ struct Solved {
 /// stopping test).
 Solved solve_scene(Scene scene, const std::string& solver, double tolerance = 1e-8)
 {
-    SolverOptions options;
-    options.tolerance = tolerance;
+    SceneRunRequest request;
+    request.solver = solver;
+    request.tolerance = tolerance;
     Solved solved;
-    solved.result = solve(*scene.problem, solver, options);
+    solved.result = run_scene(scene, resolve_scene_run(scene, request).settings).last;
     solved.configuration = scene.problem->full_configuration(solved.result.x);
     solved.energy = solved.result.objective;
     solved.size = scene.size;

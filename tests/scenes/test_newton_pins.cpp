@@ -2,9 +2,10 @@
 // iterations, factorizations, projected iterations, objective evaluations
 // and linear solves, as measured before the Newton core was split into
 // shared pieces (issue 12). A change that moves one of them on purpose moves
-// the pin here and the figures in docs/benchmarks.md together.
+// the pin here and the figures in docs/benchmarks.md together. Scenes are run
+// the one way the CLI and the bench run them: the scene runner (runs/).
 #include "sinew/problems/quasistatic/builtin_scenes.hpp"
-#include "sinew/solvers/solver.hpp"
+#include "sinew/runs/scene_runner.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -24,7 +25,9 @@ struct Pin {
 void check_pin(const Pin& pin)
 {
     Scene scene = make_builtin_scene(pin.scene);
-    const Result result = solve(*scene.problem, "projected-newton", SolverOptions{});
+    SceneRunRequest request;
+    request.solver = "projected-newton";
+    const Result result = run_scene(scene, resolve_scene_run(scene, request).settings).last;
     CAPTURE(pin.scene, result.message);
     REQUIRE(result.status == Status::converged);
     CHECK(result.iterations == pin.iterations);

@@ -3,7 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace sinew::cli {
+namespace sinew {
 
 /// A number for JSON: non-finite values become null (JSON has no NaN/Inf).
 nlohmann::json number(double value);
@@ -13,4 +13,4 @@ nlohmann::json number(double value);
 /// linear_solves (null when the backend does not report it), time_s, history.
 nlohmann::json to_json(const Result& result);
 
-} // namespace sinew::cli
+} // namespace sinew

@@ -1,7 +1,7 @@
 #pragma once
 #include <string>
 
-namespace sinew::cli {
+namespace sinew {
 
 /// InputError naming `path` and the reason when a file could not be written
 /// there (missing folder, no permission, a folder of that name). Creates and
@@ -14,4 +14,4 @@ void check_writable(const std::string& path);
 /// naming the path and the system's reason when it cannot.
 void write_text_file(const std::string& path, const std::string& content);
 
-} // namespace sinew::cli
+} // namespace sinew

@@ -1,4 +1,4 @@
-#include "output_file.hpp"
+#include "sinew/runs/output_file.hpp"
 
 #include "sinew/core/input_error.hpp"
 
@@ -9,7 +9,7 @@
 #include <fstream>
 #include <unistd.h>
 
-namespace sinew::cli {
+namespace sinew {
 namespace {
 
 std::string folder_of(const std::string& path)
@@ -61,4 +61,4 @@ void write_text_file(const std::string& path, const std::string& content)
     }
 }
 
-} // namespace sinew::cli
+} // namespace sinew

@@ -1,8 +1,8 @@
-#include "result_json.hpp"
+#include "sinew/runs/result_json.hpp"
 
 #include <cmath>
 
-namespace sinew::cli {
+namespace sinew {
 
 nlohmann::json number(double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(); }
 
@@ -54,4 +54,4 @@ nlohmann::json to_json(const Result& result)
             {"history", history}};
 }
 
-} // namespace sinew::cli
+} // namespace sinew
