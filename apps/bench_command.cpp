@@ -140,12 +140,14 @@ bool run_problems(const BenchFlags& flags, const SolverOptions& options, nlohman
         profile.iterations.push_back({s.label, {}});
         profile.time.push_back({s.label, {}});
     }
+    std::vector<char> accepted_any(strategies.size(), 0);
     bool all_good = true;
     for (const auto& problem : builtin_problems()) {
         if (!in_suite(problem, flags.suite) || !contains(flags.problems, problem.name))
             continue;
         std::vector<double> iterations, times;
-        for (const Strategy& strategy : strategies) {
+        for (size_t k = 0; k < strategies.size(); ++k) {
+            const Strategy& strategy = strategies[k];
             const std::unique_ptr<Nlp> nlp = problem.make();
             if (const auto why = find_solver(strategy.solver).refusal(*nlp)) {
                 skipped.push_back(problem.name + " × " + strategy.label + ": " + *why);
@@ -153,6 +155,7 @@ bool run_problems(const BenchFlags& flags, const SolverOptions& options, nlohman
                 times.push_back(kUnsolved);
                 continue;
             }
+            accepted_any[k] = 1;
             SolverOptions run_options = options;
             for (const auto& [key, value] : strategy.backend)
                 run_options.backend[key] = value;
@@ -194,12 +197,19 @@ bool run_problems(const BenchFlags& flags, const SolverOptions& options, nlohman
         for (const auto& row : newton_rows)
             std::cout << row << "\n";
     }
-    if (strategies.size() > 1 && !profile.iterations.front().costs.empty()) {
+    // Strategies that accepted no problem of the suite are left out of the profiles.
+    std::vector<StrategyCosts> iteration_costs, time_costs;
+    for (size_t k = 0; k < strategies.size(); ++k)
+        if (accepted_any[k]) {
+            iteration_costs.push_back(profile.iterations[k]);
+            time_costs.push_back(profile.time[k]);
+        }
+    if (iteration_costs.size() > 1 && !iteration_costs.front().costs.empty()) {
         const std::vector<double> taus = {1, 2, 4, 8, 16};
-        std::cout << "\nDolan-Moré performance profile ρ(τ) over the " << profile.iterations.front().costs.size()
+        std::cout << "\nDolan-Moré performance profile ρ(τ) over the " << iteration_costs.front().costs.size()
                   << " problems (solved: reached f*; refused or not solved counts as unsolved), iterations:\n\n"
-                  << performance_profile_table(profile.iterations, taus) << "\ntime:\n\n"
-                  << performance_profile_table(profile.time, taus);
+                  << performance_profile_table(iteration_costs, taus) << "\ntime:\n\n"
+                  << performance_profile_table(time_costs, taus);
     }
     if (!skipped.empty())
         std::cout << "\n";
