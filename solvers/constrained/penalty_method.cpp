@@ -154,6 +154,15 @@ Result OuterLoop::run()
         const bool stationary = target <= gradient_target(x);
         if (violation <= options_.constraint_tolerance && inner.status == Status::converged && stationary)
             return finish(Status::converged, "violation within constr_tol at kappa = " + format_number(kappa), x);
+        // A feasible penalty minimizer whose subproblem stalled at round-off
+        // of ∇φ (κJᵀc̃ grows with κ): more stiffness cannot help. It ends
+        // here; solve() then measures the KKT residual and keeps "converged"
+        // only if that tolerance holds too.
+        if (!settings_.multipliers && violation <= options_.constraint_tolerance && inner.status == Status::stalled)
+            return finish(Status::converged,
+                          "violation within constr_tol at kappa = " + format_number(kappa) +
+                              "; the subproblem stalled at round-off: " + inner.message,
+                          x);
         if (settings_.multipliers)
             lambda_ += kappa * c;  // λ ← λ + κc̃ (Ipopt's sign: ∇f + Jᵀλ = 0)
         const bool stalled = violation > 0.25 * last_violation;
