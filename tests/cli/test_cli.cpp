@@ -134,3 +134,13 @@ TEST_CASE("sinew list --solver prints every declared option with its range and d
     const Run penalty = run_sinew("list --solver penalty");
     CHECK(penalty.out.find("kappa (real, (0, 1e+20], default 1e2)") != std::string::npos);
 }
+
+TEST_CASE("sinew check runs the Taylor test on cantilever-206k and says why it skips the dense check")
+{
+    const Run run = run_sinew("check cantilever-206k");
+    CAPTURE(run.out, run.err);
+    CHECK(run.exit_code == 0);
+    CHECK(run.out.find("gradient      2.0") != std::string::npos);
+    CHECK(run.out.find("hessian       2.0") != std::string::npos);
+    CHECK(run.out.find("entrywise check skipped") != std::string::npos);
+}

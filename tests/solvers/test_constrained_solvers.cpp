@@ -4,12 +4,17 @@
 // violation of relaxed KKT, the equivalence of its two linear systems and of
 // the penalty, inertia correction, and honest statuses on infeasible input.
 #include "sinew/problems/builtin_problems.hpp"
+#include "sinew/problems/derivative_check.hpp"
+#include "sinew/problems/taylor_test.hpp"
+#include "sinew/solvers/constrained/augmented_lagrangian_function.hpp"
 #include "sinew/solvers/solver.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <random>
 #include <vector>
 
 using namespace sinew;
@@ -250,4 +255,72 @@ TEST_CASE("inconsistent constraints never end converged and dependent ones still
             CHECK(r.x[1] == Approx(0.5).margin(1e-8));
         }
     }
+}
+
+TEST_CASE("the augmented Lagrangian function passes the shared derivative checks at random multipliers and stiffness",
+          "[constrained]")
+{
+    std::mt19937 rng(12);
+    std::uniform_real_distribution<double> u11(-1.0, 1.0);
+    for (const std::string name : {"hs039", "hs056", "hs077", "hs063"}) {
+        auto problem = find_builtin_problem(name).make();
+        AugmentedLagrangianFunction function(*problem);
+        Eigen::VectorXd lambda(problem->num_constraints());
+        for (Eigen::Index i = 0; i < lambda.size(); ++i)
+            lambda[i] = 3.0 * u11(rng);
+        function.set_parameters(lambda, 50.0);
+        Eigen::VectorXd x = problem->starting_point();
+        for (Eigen::Index i = 0; i < x.size(); ++i)
+            x[i] += 0.1 * u11(rng);
+        const DerivativeCheckReport entrywise = check_derivatives(function, x);
+        CAPTURE(name, entrywise.to_text());
+        CHECK(entrywise.passed(1e-6));
+        const TaylorReport taylor = taylor_test(function, x);
+        CAPTURE(taylor.to_text());
+        CHECK(taylor.passed());
+    }
+}
+
+namespace {
+
+/// hs071 declaring its Hessian inexact, counting the Hessian calls it gets.
+class InexactHessianHs071 final : public Nlp {
+public:
+    std::string name() const override { return "hs071-inexact"; }
+    int num_variables() const override { return inner_->num_variables(); }
+    int num_constraints() const override { return inner_->num_constraints(); }
+    void variable_bounds(VectorRef l, VectorRef u) const override { inner_->variable_bounds(l, u); }
+    void constraint_bounds(VectorRef l, VectorRef u) const override { inner_->constraint_bounds(l, u); }
+    Vector starting_point() const override { return inner_->starting_point(); }
+    double objective(ConstVectorRef x) override { return inner_->objective(x); }
+    void gradient(ConstVectorRef x, VectorRef g) override { inner_->gradient(x, g); }
+    void constraints(ConstVectorRef x, VectorRef c) override { inner_->constraints(x, c); }
+    const SparsityPattern& jacobian_pattern() const override { return inner_->jacobian_pattern(); }
+    void jacobian_values(ConstVectorRef x, VectorRef v) override { inner_->jacobian_values(x, v); }
+    const SparsityPattern& hessian_pattern() const override { return inner_->hessian_pattern(); }
+    bool exact_hessian() const override { return false; }
+    int hessian_calls = 0;
+
+protected:
+    void hessian_values(ConstVectorRef x, double sigma, ConstVectorRef lambda, VectorRef values) override
+    {
+        ++hessian_calls;
+        inner_->hessian(x, sigma, lambda, Projection::none, values);
+    }
+
+private:
+    std::unique_ptr<Nlp> inner_ = find_builtin_problem("hs071").make();
+};
+
+} // namespace
+
+TEST_CASE("Ipopt runs in limited-memory mode on a problem whose Hessian is not exact", "[constrained]")
+{
+    InexactHessianHs071 nlp;
+    CHECK_FALSE(capabilities_of(nlp).exact_hessian);
+    const Result r = solve(nlp, "ipopt", SolverOptions{});
+    CAPTURE(r.message);
+    CHECK(r.status == Status::converged);
+    CHECK(r.objective == Approx(17.0140173).epsilon(1e-6));
+    CHECK(nlp.hessian_calls == 0);
 }
