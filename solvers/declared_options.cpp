@@ -96,7 +96,9 @@ OptionValues read_options(const std::string& solver, const std::vector<OptionDec
     OptionValues options;
     for (const OptionDeclaration& d : declared)
         options.values_[d.name] = d.default_value;
-    for (const auto& [name, value] : given) {
+    for (const auto& entry : given) {
+        const std::string& name = entry.first;  // a named variable: Clang 14 cannot capture a structured binding
+        const std::string& value = entry.second;
         const auto dot = name.find('.');
         if (dot != std::string::npos) {
             const std::string prefix = name.substr(0, dot);
