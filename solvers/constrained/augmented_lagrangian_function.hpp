@@ -30,7 +30,7 @@ public:
     const Eigen::VectorXd& last_residuals() const { return c_; }
     /// J's values at the last point whose gradient or Hessian was evaluated.
     const Eigen::VectorXd& last_jacobian() const { return jacobian_; }
-    EqualityConstraints& constraints() { return constraints_; }
+    EqualityConstraints& equality_constraints() { return constraints_; }
     double kappa() const { return kappa_; }
 
     std::string name() const override { return problem_.name(); }

@@ -147,7 +147,7 @@ Result OuterLoop::run()
         total_.statistics["outer_iterations"] = outer + 1;
         if (inner.status != Status::converged && inner.status != Status::stalled)
             return finish(inner.status, "subproblem " + std::to_string(outer + 1) + ": " + inner.message, x);
-        function_.constraints().residuals(x, c);
+        function_.equality_constraints().residuals(x, c);
         const double violation = m > 0 ? c.cwiseAbs().maxCoeff() : 0.0;
         // The subproblem's target, set from ∇f at its start, must also hold
         // for ∇f at its end; otherwise the next subproblem tightens it.
