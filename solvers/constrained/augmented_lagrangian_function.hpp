@@ -31,7 +31,6 @@ public:
     /// J's values at the last point whose gradient or Hessian was evaluated.
     const Eigen::VectorXd& last_jacobian() const { return jacobian_; }
     EqualityConstraints& equality_constraints() { return constraints_; }
-    double kappa() const { return kappa_; }
 
     std::string name() const override { return problem_.name(); }
     int num_variables() const override { return problem_.num_variables(); }

@@ -37,7 +37,6 @@ public:
     /// them), and the linear-algebra counters and times of `factorization`.
     Result finish(Status status, const std::string& message, const Eigen::VectorXd& x,
                   const RegularizedFactorization& factorization);
-    Result& result() { return result_; }
 
 private:
     using Clock = std::chrono::steady_clock;
