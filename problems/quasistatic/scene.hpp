@@ -68,6 +68,9 @@ struct Scene {
     std::shared_ptr<GravityPotential> gravity;     ///< null when the scene has no gravity
     std::shared_ptr<PointLoadPotential> loads;     ///< null when it has no point loads
     std::unique_ptr<QuasistaticProblem> problem;
+    /// The constraint sets of the scene's "constraints" (inextensible fibers,
+    /// threads), in the problem's constraint order after any Dirichlet set.
+    std::vector<std::shared_ptr<ConstraintSet>> constraints;
     std::vector<PrescribedMotion> motions;         ///< one per Dirichlet set of `problem`
     Eigen::VectorXd target_activations;            ///< α_e at s = 1, per element
     int load_steps = 1;                            ///< N

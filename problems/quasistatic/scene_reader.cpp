@@ -2,6 +2,8 @@
 
 #include "sinew/core/format_number.hpp"
 #include "sinew/core/input_error.hpp"
+#include "sinew/energies/constraints/fiber_inextensibility.hpp"
+#include "sinew/energies/constraints/thread_lengths.hpp"
 #include "sinew/energies/potentials/element_model.hpp"
 #include "sinew/energies/potentials/lumped_mass.hpp"
 #include "sinew/energies/potentials/obstacle_penalty_potential.hpp"
@@ -272,6 +274,90 @@ std::vector<Material> group_materials(const JsonCursor& list, const Mesh& mesh)
     return out;
 }
 
+/// The index of the mesh group called `name`; an error at `where` listing the groups otherwise.
+int group_index(const JsonCursor& where, const Mesh& mesh, const std::string& name)
+{
+    const auto found = std::find(mesh.group_names.begin(), mesh.group_names.end(), name);
+    if (found == mesh.group_names.end()) {
+        std::string names;
+        for (const auto& g : mesh.group_names)
+            names += (names.empty() ? "" : ", ") + g;
+        where.fail("the mesh has no group '" + name + "'; its groups: " + names);
+    }
+    return static_cast<int>(found - mesh.group_names.begin());
+}
+
+/// {"type": "fiber_inextensibility", "groups": [...]}: a₀ᵀCa₀ = 1 on every
+/// element of the groups (all groups when absent), a₀ the elastic
+/// potential's fiber of each element (seed 004 §4.1).
+std::shared_ptr<ConstraintSet> fiber_constraints(const JsonCursor& c, const Scene& scene,
+                                                 const std::vector<Material>& materials)
+{
+    c.expect_object({"type", "groups"});
+    const Mesh& mesh = scene.mesh;
+    std::vector<char> chosen(mesh.group_names.size(), c.has("groups") ? 0 : 1);
+    if (auto groups = c.find("groups")) {
+        if (groups->size() == 0)
+            groups->fail("selects no group");
+        for (size_t i = 0; i < groups->size(); ++i)
+            chosen[static_cast<size_t>(group_index((*groups)[i], mesh, (*groups)[i].string()))] = 1;
+    }
+    for (size_t g = 0; g < chosen.size(); ++g) {
+        const Material& m = materials[g];
+        if (chosen[g] && !m.fiber && !m.fiber_list && mesh.element_fibers.size() == 0)
+            c.fail("group '" + mesh.group_names[g] + "' has no fiber (give its material a \"fiber\")");
+    }
+    std::vector<int> elements;
+    for (int e = 0; e < mesh.num_elements(); ++e)
+        if (chosen[static_cast<size_t>(mesh.element_groups[static_cast<size_t>(e)])])
+            elements.push_back(e);
+    if (elements.empty())
+        c.fail("selects no element");
+    Eigen::MatrixXd fibers(material_dimension(mesh.kind), static_cast<Eigen::Index>(elements.size()));
+    for (size_t k = 0; k < elements.size(); ++k)
+        fibers.col(static_cast<Eigen::Index>(k)) = scene.elastic->fiber(elements[k]);
+    return at_place(c, [&] { return std::make_shared<FiberInextensibility>(mesh, elements, fibers); });
+}
+
+/// {"type": "threads", "polylines": [[node, node, ...], ...]}: inextensible
+/// segments |x_j − x_i| = L_ij along each polyline.
+std::shared_ptr<ConstraintSet> thread_constraints(const JsonCursor& c, const Mesh& mesh)
+{
+    c.expect_object({"type", "polylines"});
+    const JsonCursor list = c.at("polylines");
+    if (list.size() == 0)
+        list.fail("selects no polyline");
+    std::vector<std::vector<int>> polylines;
+    for (size_t i = 0; i < list.size(); ++i) {
+        const JsonCursor line = list[i];
+        std::vector<int> nodes;
+        for (size_t k = 0; k < line.size(); ++k)
+            nodes.push_back(line[k].integer_in(0, mesh.num_nodes() - 1));
+        polylines.push_back(std::move(nodes));
+    }
+    const int dimension = static_cast<int>(mesh.nodes.rows());
+    const Eigen::VectorXd rest = Eigen::Map<const Eigen::VectorXd>(mesh.nodes.data(), mesh.nodes.size());
+    return at_place(c, [&] { return std::make_shared<ThreadLengths>(mesh.num_nodes(), dimension, rest, polylines); });
+}
+
+/// The scene's "constraints" array: constraint sets beside the potentials.
+std::vector<std::shared_ptr<ConstraintSet>> scene_constraints(const JsonCursor& list, const Scene& scene,
+                                                              const std::vector<Material>& materials)
+{
+    std::vector<std::shared_ptr<ConstraintSet>> sets;
+    for (size_t i = 0; i < list.size(); ++i) {
+        const JsonCursor c = list[i];
+        const std::string type = c.at("type").string();
+        if (type == "fiber_inextensibility")
+            sets.push_back(fiber_constraints(c, scene, materials));
+        else if (type == "threads")
+            sets.push_back(thread_constraints(c, scene.mesh));
+        else
+            c.at("type").fail("unknown constraint type '" + type + "'; valid: fiber_inextensibility, threads");
+    }
+    return sets;
+}
+
 /// A load step s moves a set by M(s) = I + s(M − I) (scene.hpp). det M(s) =
 /// Π(1 + s μᵢ) over the eigenvalues μᵢ of M − I vanishes for some s ∈ (0, 1]
 /// exactly when a real μᵢ ≤ −1, i.e. when M has a real eigenvalue λ ≤ 0: such
@@ -344,7 +430,7 @@ Scene parse_scene(const std::string& text, const std::string& document, const st
     const JsonDocument json = parse_json_text(text, document);
     const JsonCursor root(json);
     root.expect_object({"name", "description", "mesh", "materials", "gravity", "boundary", "loads", "obstacles",
-                        "dirichlet", "load_steps", "solver", "output"});
+                        "constraints", "dirichlet", "load_steps", "solver", "output"});
     Scene scene;
     scene.name = root.has("name") ? root.at("name").string()
                                   : std::filesystem::path(document).stem().string();
@@ -481,6 +567,10 @@ Scene parse_scene(const std::string& text, const std::string& document, const st
             options.dirichlet = DirichletStrategy::equality_constraints;
         else
             d->fail("unknown strategy '" + strategy + "'; valid: eliminate, equality_constraints");
+    }
+    if (auto list = root.find("constraints")) {
+        scene.constraints = scene_constraints(*list, scene, materials);
+        options.constraints = scene.constraints;
     }
     if (auto n = root.find("load_steps"))
         scene.load_steps = n->integer_in(1, 100000);

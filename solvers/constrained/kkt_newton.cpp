@@ -1,5 +1,6 @@
 #include "sinew/solvers/constrained/kkt_newton.hpp"
 
+#include "sinew/core/format_number.hpp"
 #include "sinew/solvers/constrained/equality_constraints.hpp"
 #include "sinew/solvers/newton/active_bounds.hpp"
 #include "sinew/solvers/newton/kkt_matrix.hpp"
@@ -219,7 +220,11 @@ Result KktNewtonRun::run()
             slope = merit_slope();
         }
         if (!(slope < 0.0))
-            return finish(Status::stalled, "the KKT step is not a descent direction of the merit (round-off)");
+            return finish(Status::stalled, "the KKT step is not a descent direction of the l1 merit at a constraint "
+                                           "violation of " + format_number(primal) +
+                                               (primal > options_.constraint_tolerance
+                                                    ? " (inconsistent or degenerate constraints?)"
+                                                    : " (round-off)"));
         const double merit0 = merit(f_, c_);
         const double primal_before_step = primal;
         auto merit_along = [&](double a) {

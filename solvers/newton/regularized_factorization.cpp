@@ -1,5 +1,7 @@
 #include "sinew/solvers/newton/regularized_factorization.hpp"
 
+#include "sinew/core/format_number.hpp"
+
 #include <chrono>
 #include <cmath>
 
@@ -88,8 +90,13 @@ bool RegularizedFactorization::factorize_with_inertia(
         }
         delta_w *= growth;
     }
+    const bool stays_singular = attempts_.back().status == LinearStatus::singular;
     failure_ = "no regularization up to delta_w = 1e40 gives the KKT matrix the inertia (" + std::to_string(n) +
-               ", " + std::to_string(m) + ", 0); last: " + solver_->last_message();
+               ", " + std::to_string(m) + ", 0)" +
+               (stays_singular ? ": it stays singular with delta_c = " + format_number(delta_c) +
+                                     ", so the constraint Jacobian is rank-deficient (more independent constraints "
+                                     "than the variables can meet, or dependent ones)"
+                               : "; last: " + solver_->last_message());
     return false;
 }
 

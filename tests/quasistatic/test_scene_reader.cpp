@@ -264,3 +264,43 @@ TEST_CASE("numbers in a scene are taken as written: subnormal parameters, the us
     CHECK(error_of(replaced(beam_scene(), "\"translation\": [0.2, 0, 0]",
                             "\"map\": [[1, 0, 0], [0, 0, -1], [0, 1, 0]]")).empty());
 }
+
+TEST_CASE("scene constraints: fiber inextensibility on groups and threads along node polylines",
+          "[scene][constraints]")
+{
+    const std::string fibers = R"(,
+  "constraints": [{"type": "fiber_inextensibility"}, {"type": "threads", "polylines": [[0, 1, 2], [3, 4]]}])";
+    const std::string with_fiber = replaced(beam_scene(fibers), R"("density": 1000})",
+                                            R"("density": 1000, "fiber": [1, 1, 0]})");
+    const Scene scene = parse_scene(with_fiber, "test.json");
+    REQUIRE(scene.constraints.size() == 2);
+    CHECK(scene.constraints[0]->num_constraints() == scene.mesh.num_elements());
+    CHECK(scene.constraints[1]->num_constraints() == 3);
+    CHECK(scene.problem->num_constraints() == scene.mesh.num_elements() + 3);
+    // At rest every fiber and every segment has its rest length.
+    const Eigen::VectorXd rest = Eigen::Map<const Eigen::VectorXd>(scene.mesh.nodes.data(), scene.mesh.nodes.size());
+    Eigen::VectorXd c(scene.constraints[0]->num_constraints());
+    scene.constraints[0]->values(rest, c);
+    CHECK(c.cwiseAbs().maxCoeff() <= 1e-14);
+}
+
+TEST_CASE("scene constraints: errors name the JSON path", "[scene][constraints]")
+{
+    const auto constraints = [](const std::string& list) { return beam_scene(",\n  \"constraints\": " + list); };
+    CHECK_THAT(error_of(constraints(R"([{"type": "rigid"}])")),
+               Catch::Contains("constraints[0].type: unknown constraint type 'rigid'; valid: fiber_inextensibility, threads"));
+    CHECK_THAT(error_of(constraints(R"([{"type": "fiber_inextensibility", "groups": ["belly"]}])")),
+               Catch::Contains("constraints[0].groups[0]: the mesh has no group 'belly'"));
+    CHECK_THAT(error_of(constraints(R"([{"type": "fiber_inextensibility", "groups": []}])")),
+               Catch::Contains("constraints[0].groups: selects no group"));
+    CHECK_THAT(error_of(constraints(R"([{"type": "fiber_inextensibility"}])")),
+               Catch::Contains("constraints[0]: group 'default' has no fiber (give its material a \"fiber\")"));
+    CHECK_THAT(error_of(constraints(R"([{"type": "threads", "polylines": []}])")),
+               Catch::Contains("constraints[0].polylines: selects no polyline"));
+    CHECK_THAT(error_of(constraints(R"([{"type": "threads", "polylines": [[0, 99]]}])")),
+               Catch::Contains("constraints[0].polylines[0][1]"));
+    CHECK_THAT(error_of(constraints(R"([{"type": "threads", "polylines": [[0, 0]]}])")),
+               Catch::Contains("constraints[0]: thread lengths:"));
+    CHECK_THAT(error_of(constraints(R"([{"type": "threads", "polylines": [[0, 1]], "stiffness": 3}])")),
+               Catch::Contains("constraints[0].stiffness: unknown key"));
+}
