@@ -5,6 +5,7 @@
 
 #include "sinew/core/format_number.hpp"
 #include "sinew/core/input_error.hpp"
+#include "sinew/energies/constraints/fiber_inextensibility.hpp"
 #include "sinew/mesh/vtu_writer.hpp"
 #include "sinew/solvers/solver.hpp"
 
@@ -19,7 +20,40 @@ Eigen::MatrixXd by_node(const Eigen::VectorXd& v, int dimension)
     return Eigen::Map<const Eigen::MatrixXd>(v.data(), dimension, v.size() / dimension);
 }
 
-void write_scene_vtu(const std::string& path, Scene& scene, const Eigen::VectorXd& configuration)
+/// Cell data of the scene's inextensible fibers: "inextensible" (1 where an
+/// element carries a₀ᵀCa₀ − 1 = 0), its value c_e and its multiplier λ_e
+/// (Ipopt's sign convention; 0 where the element carries none).
+void add_inextensibility_cells(const Scene& scene, const Eigen::VectorXd& configuration,
+                               const Eigen::VectorXd& multipliers, VtuArrays& cells)
+{
+    const int count = scene.mesh.num_elements();
+    Eigen::MatrixXd flag = Eigen::MatrixXd::Zero(1, count), value = flag, multiplier = flag;
+    bool any = false;
+    for (const auto& set : scene.constraints) {
+        auto* fibers = dynamic_cast<FiberInextensibility*>(set.get());
+        if (!fibers)
+            continue;
+        any = true;
+        Eigen::VectorXd c(fibers->num_constraints());
+        fibers->values(configuration, c);
+        const int offset = scene.problem->constraint_offset(*fibers);
+        for (int k = 0; k < fibers->num_constraints(); ++k) {
+            const int e = fibers->elements()[static_cast<size_t>(k)];
+            flag(0, e) = 1.0;
+            value(0, e) = c[k];
+            if (offset >= 0 && offset + k < multipliers.size())
+                multiplier(0, e) = multipliers[offset + k];
+        }
+    }
+    if (!any)
+        return;
+    cells["inextensible"] = flag;
+    cells["inextensibility_value"] = value;
+    cells["inextensibility_multiplier"] = multiplier;
+}
+
+void write_scene_vtu(const std::string& path, Scene& scene, const Eigen::VectorXd& configuration,
+                     const Eigen::VectorXd& multipliers)
 {
     const Mesh& mesh = scene.mesh;
     const int dimension = static_cast<int>(mesh.nodes.rows());
@@ -47,6 +81,7 @@ void write_scene_vtu(const std::string& path, Scene& scene, const Eigen::VectorX
     cells["damage"] = damage;
     cells["fiber"] = fiber;
     cells["stress_norm"] = scene.elastic->stress_norms(configuration).transpose();
+    add_inextensibility_cells(scene, configuration, multipliers, cells);
     write_vtu(path, mesh, positions, points, cells);
 }
 
@@ -138,12 +173,12 @@ SceneRunOutcome run_scene(Scene& scene, const SceneRunSettings& settings)
         const Eigen::VectorXd configuration = problem.full_configuration(result.x);
         if (writes && settings.vtu == VtuOutput::every_step && n > 1) {
             const std::string name = "step_" + std::to_string(k) + ".vtu";
-            write_scene_vtu(folder + name, scene, configuration);
+            write_scene_vtu(folder + name, scene, configuration, result.constraint_multipliers);
             vtu_files.push_back(name);
         }
         if (result.status != Status::converged || k == n) {
             if (writes && settings.vtu != VtuOutput::none) {
-                write_scene_vtu(folder + "result.vtu", scene, configuration);
+                write_scene_vtu(folder + "result.vtu", scene, configuration, result.constraint_multipliers);
                 vtu_files.push_back("result.vtu");
             }
             break;

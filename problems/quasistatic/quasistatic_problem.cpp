@@ -116,6 +116,14 @@ void QuasistaticProblem::map_constraint_sets()
     }
 }
 
+int QuasistaticProblem::constraint_offset(const ConstraintSet& set) const
+{
+    for (size_t s = 0; s < constraint_sets_.size(); ++s)
+        if (constraint_sets_[s].get() == &set)
+            return constraint_offsets_[s];
+    return -1;
+}
+
 void QuasistaticProblem::apply_set(const DirichletSet& s, int set)
 {
     const int d = potential_->dimension();

@@ -78,6 +78,8 @@ public:
     bool supports(Projection) const override { return true; }
 
     DirichletStrategy strategy() const { return options_.dirichlet; }
+    /// The first row of `set` among the NLP's constraints; −1 when the problem does not hold it.
+    int constraint_offset(const ConstraintSet& set) const;
     TotalPotential& potential() { return *potential_; }
     const std::vector<DirichletSet>& dirichlet_sets() const { return sets_; }
     int num_prescribed_coordinates() const { return static_cast<int>(prescribed_coordinates_.size()); }

@@ -181,3 +181,33 @@ TEST_CASE("a scene with an inextensible thread is solved by kkt-newton, augmente
         for (size_t i = 0; i < results[0]["x"].size(); ++i)
             CHECK(results[k]["x"][i].get<double>() == Approx(results[0]["x"][i].get<double>()).margin(1e-6));
 }
+
+TEST_CASE("the VTU output of a scene with inextensible fibers holds each element's constraint value and multiplier")
+{
+    const std::string scene = scratch("fiber_beam.json");
+    std::ofstream(scene) << R"({
+  "name": "fiber-beam",
+  "mesh": {"generator": "box", "lower": [0, 0, 0], "upper": [1, 0.25, 0.25], "cells": [4, 1, 1]},
+  "materials": [{"model": "stable-neo-hookean", "parameters": {"mu": 1e4, "lambda": 1e5}, "density": 1000,
+                 "fiber": [1, 0, 0]}],
+  "gravity": [0, 0, -9.81],
+  "boundary": [{"name": "clamp", "select": {"plane": {"point": [0, 0, 0], "normal": [1, 0, 0]}}}],
+  "constraints": [{"type": "fiber_inextensibility"}]
+}
+)";
+    const std::string folder = scratch("fiber_beam_out");
+    std::filesystem::remove_all(folder);
+    const Run run = run_sinew("solve '" + scene + "' --solver ipopt --output '" + folder + "' --verbosity 0");
+    CAPTURE(run.out, run.err);
+    REQUIRE(run.exit_code == 0);
+    const std::string vtu = slurp(folder + "/result.vtu");
+    for (const char* array : {"inextensible", "inextensibility_value", "inextensibility_multiplier"})
+        CHECK(vtu.find(std::string("Name=\"") + array + "\"") != std::string::npos);
+    // The multipliers the VTU shows are the result's, element by element (24 tets, all constrained).
+    const auto r = read_json(folder + "/result.json")["result"];
+    REQUIRE(r["constraint_multipliers"].size() == 24);
+    double largest = 0.0;
+    for (const auto& lambda : r["constraint_multipliers"])
+        largest = std::max(largest, std::abs(lambda.get<double>()));
+    CHECK(largest > 0.0);  // gravity bends the beam against its fibers
+}
