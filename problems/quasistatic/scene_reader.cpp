@@ -4,6 +4,7 @@
 #include "sinew/core/input_error.hpp"
 #include "sinew/energies/constraints/fiber_inextensibility.hpp"
 #include "sinew/energies/constraints/thread_lengths.hpp"
+#include "sinew/energies/constraints/weak_fiber_inextensibility.hpp"
 #include "sinew/energies/potentials/element_model.hpp"
 #include "sinew/energies/potentials/lumped_mass.hpp"
 #include "sinew/energies/potentials/obstacle_penalty_potential.hpp"
@@ -289,11 +290,16 @@ int group_index(const JsonCursor& where, const Mesh& mesh, const std::string& na
 
 /// {"type": "fiber_inextensibility", "groups": [...]}: a₀ᵀCa₀ = 1 on every
 /// element of the groups (all groups when absent), a₀ the elastic
-/// potential's fiber of each element (seed 004 §4.1).
+/// potential's fiber of each element (seed 004 §4.1). With `weak`,
+/// {"type": "weak_fiber_inextensibility", "groups", "cells": [n...]}: one
+/// constraint Σ V_e(a₀ᵀC_e a₀ − 1) per cell of a coarse grid (seed 004 §4.2.2).
 std::shared_ptr<ConstraintSet> fiber_constraints(const JsonCursor& c, const Scene& scene,
-                                                 const std::vector<Material>& materials)
+                                                 const std::vector<Material>& materials, bool weak)
 {
-    c.expect_object({"type", "groups"});
+    if (weak)
+        c.expect_object({"type", "groups", "cells"});
+    else
+        c.expect_object({"type", "groups"});
     const Mesh& mesh = scene.mesh;
     std::vector<char> chosen(mesh.group_names.size(), c.has("groups") ? 0 : 1);
     if (auto groups = c.find("groups")) {
@@ -316,7 +322,16 @@ std::shared_ptr<ConstraintSet> fiber_constraints(const JsonCursor& c, const Scen
     Eigen::MatrixXd fibers(material_dimension(mesh.kind), static_cast<Eigen::Index>(elements.size()));
     for (size_t k = 0; k < elements.size(); ++k)
         fibers.col(static_cast<Eigen::Index>(k)) = scene.elastic->fiber(elements[k]);
-    return at_place(c, [&] { return std::make_shared<FiberInextensibility>(mesh, elements, fibers); });
+    if (!weak)
+        return at_place(c, [&] { return std::make_shared<FiberInextensibility>(mesh, elements, fibers); });
+    const JsonCursor cells = c.at("cells");
+    const int dimension = static_cast<int>(mesh.nodes.rows());
+    if (static_cast<int>(cells.size()) != dimension)
+        cells.fail("expected " + std::to_string(dimension) + " cell counts, one per dimension");
+    Eigen::VectorXi counts(dimension);
+    for (int d = 0; d < dimension; ++d)
+        counts[d] = cells[static_cast<size_t>(d)].integer_in(1, 10000);
+    return at_place(c, [&] { return std::make_shared<WeakFiberInextensibility>(mesh, elements, fibers, counts); });
 }
 
 /// {"type": "threads", "polylines": [[node, node, ...], ...]}: inextensible
@@ -348,12 +363,13 @@ std::vector<std::shared_ptr<ConstraintSet>> scene_constraints(const JsonCursor& 
     for (size_t i = 0; i < list.size(); ++i) {
         const JsonCursor c = list[i];
         const std::string type = c.at("type").string();
-        if (type == "fiber_inextensibility")
-            sets.push_back(fiber_constraints(c, scene, materials));
+        if (type == "fiber_inextensibility" || type == "weak_fiber_inextensibility")
+            sets.push_back(fiber_constraints(c, scene, materials, type == "weak_fiber_inextensibility"));
         else if (type == "threads")
             sets.push_back(thread_constraints(c, scene.mesh));
         else
-            c.at("type").fail("unknown constraint type '" + type + "'; valid: fiber_inextensibility, threads");
+            c.at("type").fail("unknown constraint type '" + type +
+                              "'; valid: fiber_inextensibility, weak_fiber_inextensibility, threads");
     }
     return sets;
 }

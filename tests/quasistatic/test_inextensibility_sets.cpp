@@ -6,6 +6,7 @@
 #include "sinew/core/input_error.hpp"
 #include "sinew/energies/constraints/fiber_inextensibility.hpp"
 #include "sinew/energies/constraints/thread_lengths.hpp"
+#include "sinew/energies/constraints/weak_fiber_inextensibility.hpp"
 #include "sinew/energies/potentials/elastic_potential.hpp"
 #include "sinew/energies/potentials/element_rest_shape.hpp"
 #include "sinew/problems/derivative_check.hpp"
@@ -16,6 +17,7 @@
 #include "potentials/test_meshes.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -489,4 +491,70 @@ TEST_CASE("thread lengths reject bad input with an InputError", "[inextensibilit
     not_finite[4] = std::numeric_limits<double>::quiet_NaN();
     CHECK_THROWS_AS(ThreadLengths(n, 3, not_finite, {{0, 1}}), InputError);
     CHECK_NOTHROW(ThreadLengths(n, 3, X, {{0, 1, 3, 2, 0}}));  // a closed thread
+}
+
+namespace {
+
+/// Every element, one random fiber each, in weak form on a `cells` grid.
+std::shared_ptr<WeakFiberInextensibility> weak_fibers_on(const Mesh& mesh, const Eigen::VectorXi& cells,
+                                                        std::mt19937& rng)
+{
+    const std::vector<int> listed = all_elements(mesh);
+    return std::make_shared<WeakFiberInextensibility>(
+        mesh, listed, random_fibers(material_dimension(mesh.kind), static_cast<int>(listed.size()), rng), cells);
+}
+
+/// The numerical rank of the dense Jacobian of `set` at x.
+int jacobian_rank(ConstraintSet& set, const Eigen::VectorXd& x)
+{
+    Eigen::VectorXd values(set.jacobian_pattern().nonzeros());
+    set.jacobian_values(x, values);
+    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(set.num_constraints(), x.size());
+    for (int k = 0; k < values.size(); ++k)
+        J(set.jacobian_pattern().rows[k], set.jacobian_pattern().cols[k]) += values[k];
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(J);
+    qr.setThreshold(1e-10);
+    return static_cast<int>(qr.rank());
+}
+
+} // namespace
+
+TEST_CASE("weak-form fiber inextensibility passes the shared derivative checks in every regime",
+          "[inextensibility]")
+{
+    std::mt19937 rng(47);
+    const Mesh tets = box_of_tets(2, 2, 2, kH);
+    check_every_pose(tets, weak_fibers_on(tets, Eigen::Vector3i(2, 1, 1), rng), rng);
+    const Mesh plate = rectangle_of_triangles(4, 4, kH);
+    check_every_pose(plate, weak_fibers_on(plate, Eigen::Vector2i(2, 2), rng), rng);
+}
+
+TEST_CASE("weak-form fiber inextensibility sums V_e c_e per grid cell and has full row rank where the per-element "
+          "form does not",
+          "[inextensibility]")
+{
+    std::mt19937 rng(48);
+    const Mesh mesh = box_of_tets(4, 4, 4, kH);
+    const std::vector<int> listed = all_elements(mesh);
+    const Eigen::MatrixXd fibers = random_fibers(3, static_cast<int>(listed.size()), rng);
+    FiberInextensibility per_element(mesh, listed, fibers);
+    WeakFiberInextensibility weak(mesh, listed, fibers, Eigen::Vector3i(2, 2, 2));
+    REQUIRE(weak.num_constraints() == 8);  // 2×2×2 cells, each holding 8 hex cells of 6 tets
+    const Eigen::VectorXd x = posed(mesh, all_poses()[1], rng);
+    // c_z = Σ_{e∈z} V_e c_e: the sum over cells is Σ_e V_e c_e, V_e = h³/6 for these tets.
+    const double volume = kH * kH * kH / 6.0;
+    CHECK(values_of(weak, x).sum() == Approx(volume * values_of(per_element, x).sum()).epsilon(1e-12));
+    // 384 per-element rows on 125 nodes (375 coordinates): rank-deficient;
+    // the 8 weak rows are independent.
+    CHECK(per_element.num_constraints() == 384);
+    CHECK(jacobian_rank(per_element, x) < per_element.num_constraints());
+    CHECK(jacobian_rank(weak, x) == weak.num_constraints());
+}
+
+TEST_CASE("weak-form fiber inextensibility rejects a grid with a zero cell count", "[inextensibility]")
+{
+    std::mt19937 rng(49);
+    const Mesh mesh = box_of_tets(1, 1, 1, kH);
+    CHECK_THROWS_AS(weak_fibers_on(mesh, Eigen::Vector3i(1, 0, 1), rng), InputError);
+    CHECK_THROWS_AS(weak_fibers_on(mesh, Eigen::Vector2i(1, 1), rng), InputError);
 }

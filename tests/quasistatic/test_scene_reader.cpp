@@ -269,14 +269,16 @@ TEST_CASE("scene constraints: fiber inextensibility on groups and threads along 
           "[scene][constraints]")
 {
     const std::string fibers = R"(,
-  "constraints": [{"type": "fiber_inextensibility"}, {"type": "threads", "polylines": [[0, 1, 2], [3, 4]]}])";
+  "constraints": [{"type": "fiber_inextensibility"}, {"type": "threads", "polylines": [[0, 1, 2], [3, 4]]},
+                  {"type": "weak_fiber_inextensibility", "cells": [2, 1, 1]}])";
     const std::string with_fiber = replaced(beam_scene(fibers), R"("density": 1000})",
                                             R"("density": 1000, "fiber": [1, 1, 0]})");
     const Scene scene = parse_scene(with_fiber, "test.json");
-    REQUIRE(scene.constraints.size() == 2);
+    REQUIRE(scene.constraints.size() == 3);
     CHECK(scene.constraints[0]->num_constraints() == scene.mesh.num_elements());
     CHECK(scene.constraints[1]->num_constraints() == 3);
-    CHECK(scene.problem->num_constraints() == scene.mesh.num_elements() + 3);
+    CHECK(scene.constraints[2]->num_constraints() == 2);  // the beam's two cells along x, one per grid cell
+    CHECK(scene.problem->num_constraints() == scene.mesh.num_elements() + 3 + 2);
     // At rest every fiber and every segment has its rest length.
     const Eigen::VectorXd rest = Eigen::Map<const Eigen::VectorXd>(scene.mesh.nodes.data(), scene.mesh.nodes.size());
     Eigen::VectorXd c(scene.constraints[0]->num_constraints());
@@ -288,19 +290,28 @@ TEST_CASE("scene constraints: errors name the JSON path", "[scene][constraints]"
 {
     const auto constraints = [](const std::string& list) { return beam_scene(",\n  \"constraints\": " + list); };
     CHECK_THAT(error_of(constraints(R"([{"type": "rigid"}])")),
-               Catch::Contains("constraints[0].type: unknown constraint type 'rigid'; valid: fiber_inextensibility, threads"));
+               Catch::Contains("constraints[0].type: unknown constraint type 'rigid'; valid: fiber_inextensibility, weak_fiber_inextensibility, threads"));
     CHECK_THAT(error_of(constraints(R"([{"type": "fiber_inextensibility", "groups": ["belly"]}])")),
                Catch::Contains("constraints[0].groups[0]: the mesh has no group 'belly'"));
     CHECK_THAT(error_of(constraints(R"([{"type": "fiber_inextensibility", "groups": []}])")),
                Catch::Contains("constraints[0].groups: selects no group"));
     CHECK_THAT(error_of(constraints(R"([{"type": "fiber_inextensibility"}])")),
                Catch::Contains("constraints[0]: group 'default' has no fiber (give its material a \"fiber\")"));
+    CHECK_THAT(error_of(constraints(R"([{"type": "weak_fiber_inextensibility", "cells": [2, 1]}])")),
+               Catch::Contains("constraints[0]: group 'default' has no fiber"));
     CHECK_THAT(error_of(constraints(R"([{"type": "threads", "polylines": []}])")),
                Catch::Contains("constraints[0].polylines: selects no polyline"));
     CHECK_THAT(error_of(constraints(R"([{"type": "threads", "polylines": [[0, 99]]}])")),
                Catch::Contains("constraints[0].polylines[0][1]"));
     CHECK_THAT(error_of(constraints(R"([{"type": "threads", "polylines": [[0, 0]]}])")),
                Catch::Contains("constraints[0]: thread lengths:"));
+    const std::string fibered = R"("density": 1000, "fiber": [1, 0, 0]})";
+    CHECK_THAT(error_of(replaced(constraints(R"([{"type": "weak_fiber_inextensibility", "cells": [2, 1]}])"),
+                                 R"("density": 1000})", fibered)),
+               Catch::Contains("constraints[0].cells: expected 3 cell counts, one per dimension"));
+    CHECK_THAT(error_of(replaced(constraints(R"([{"type": "weak_fiber_inextensibility", "cells": [2, 0, 1]}])"),
+                                 R"("density": 1000})", fibered)),
+               Catch::Contains("constraints[0].cells[1]"));
     CHECK_THAT(error_of(constraints(R"([{"type": "threads", "polylines": [[0, 1]], "stiffness": 3}])")),
                Catch::Contains("constraints[0].stiffness: unknown key"));
 }
