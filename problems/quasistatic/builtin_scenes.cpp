@@ -19,7 +19,8 @@ std::vector<BuiltinProblem> quasistatic_scenes()
         {"muscle-spindle", "quasistatic"},          {"qr-plate", "quasistatic"},
         {"codim-sheet", "quasistatic"},             {"cantilever-52k", "quasistatic-large"},
         {"twisted-cantilever-52k", "quasistatic-large"}, {"cantilever-206k", "quasistatic-large"},
-        {"twisted-cantilever-206k", "quasistatic-large"}};
+        {"twisted-cantilever-206k", "quasistatic-large"}, {"inextensible-plate", "inextensibility"},
+        {"locking-block", "inextensibility"}};
     std::vector<BuiltinProblem> out;
     for (const auto& [name, suite] : scenes) {
         // The description is read from the file once, here; make() reads it again.

@@ -191,6 +191,11 @@ Result KktNewtonRun::run()
     if (!std::isfinite(f_))
         return finish(Status::numerical_error, "objective not finite at the starting point");
     evaluate_first_order();
+    // J (m × n) cannot have full row rank: K is singular for every δw.
+    if (m_ > n_)
+        return finish(Status::failed, std::to_string(m_) + " equality constraints on " + std::to_string(n_) +
+                                          " variables: the exact KKT system is singular (use relaxed-kkt, penalty "
+                                          "or augmented-lagrangian, which relax it)");
     double step_norm = 0.0, alpha = 0.0;
     VectorXd infeasibility_gradient(n_);
     for (int iteration = 0;; ++iteration) {

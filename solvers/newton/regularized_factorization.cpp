@@ -93,9 +93,9 @@ bool RegularizedFactorization::factorize_with_inertia(
     const bool stays_singular = attempts_.back().status == LinearStatus::singular;
     failure_ = "no regularization up to delta_w = 1e40 gives the KKT matrix the inertia (" + std::to_string(n) +
                ", " + std::to_string(m) + ", 0)" +
-               (stays_singular ? ": it stays singular with delta_c = " + format_number(delta_c) +
-                                     ", so the constraint Jacobian is rank-deficient (more independent constraints "
-                                     "than the variables can meet, or dependent ones)"
+               (stays_singular ? ": it stays singular (delta_c = " + format_number(delta_c) +
+                                     "), so the constraint Jacobian looks rank-deficient (dependent constraints, "
+                                     "or more than the variables can meet)"
                                : "; last: " + solver_->last_message());
     return false;
 }

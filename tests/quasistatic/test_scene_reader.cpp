@@ -153,7 +153,7 @@ TEST_CASE("every built-in scene file parses")
             continue;  // large: built by the bench, same format as their 6k siblings
         CHECK_NOTHROW(parse_scene(file.text, file.name));
     }
-    CHECK(builtin_scene_files().size() == 9);
+    CHECK(builtin_scene_files().size() == 11);
 }
 
 TEST_CASE("bad scene input gives one InputError naming the document and the JSON path")

@@ -1,0 +1,57 @@
+// The built-in scenes of suite "inextensibility" (issue 13): the weak-form
+// plate solved alike by the exact KKT Newton and Ipopt, and the locking
+// block, whose per-element constraints outnumber the unknowns, ending
+// unconverged with a reason under every strategy.
+#include "sinew/problems/builtin_problems.hpp"
+#include "sinew/problems/quasistatic/builtin_scenes.hpp"
+#include "sinew/runs/scene_runner.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace sinew;
+
+namespace {
+
+Result run_builtin(const std::string& scene_name, const std::string& solver)
+{
+    Scene scene = make_builtin_scene(scene_name);
+    SceneRunRequest request;
+    request.solver = solver;
+    return run_scene(scene, resolve_scene_run(scene, request).settings).last;
+}
+
+} // namespace
+
+TEST_CASE("suite inextensibility holds the weak-form plate and the locking block", "[inextensibility-scenes]")
+{
+    std::vector<std::string> names;
+    for (const BuiltinProblem& p : builtin_problems())
+        if (p.suite == "inextensibility")
+            names.push_back(p.name);
+    CHECK(names == std::vector<std::string>{"inextensible-plate", "locking-block"});
+}
+
+TEST_CASE("kkt-newton and ipopt reach the same equilibrium of the inextensible plate", "[inextensibility-scenes]")
+{
+    const Result kkt = run_builtin("inextensible-plate", "kkt-newton");
+    const Result ipopt = run_builtin("inextensible-plate", "ipopt");
+    CAPTURE(kkt.message, ipopt.message);
+    REQUIRE(kkt.status == Status::converged);
+    REQUIRE(ipopt.status == Status::converged);
+    CHECK(kkt.constraint_violation <= 1e-10);
+    CHECK(kkt.objective == Approx(ipopt.objective).epsilon(1e-9));
+    CHECK((kkt.x - ipopt.x).cwiseAbs().maxCoeff() <= 1e-6);
+}
+
+TEST_CASE("on the locking block no strategy reports converged, and each says why", "[inextensibility-scenes]")
+{
+    for (const std::string solver : {"kkt-newton", "relaxed-kkt", "penalty", "augmented-lagrangian", "ipopt"}) {
+        const Result r = run_builtin("locking-block", solver);
+        CAPTURE(solver, r.message, r.constraint_violation);
+        CHECK(r.status != Status::converged);
+        CHECK_FALSE(r.message.empty());
+        CHECK(r.constraint_violation > 1e-3);
+    }
+    const Result kkt = run_builtin("locking-block", "kkt-newton");
+    CHECK_THAT(kkt.message, Catch::Contains("288 equality constraints on 150 variables"));
+}
