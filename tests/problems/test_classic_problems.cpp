@@ -2,6 +2,8 @@
 #include "sinew/problems/classic/classic_problems.hpp"
 #include "sinew/problems/classic/rosenbrock.hpp"
 
+#include "problems/pattern_checks.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <Eigen/Core>
@@ -18,6 +20,7 @@
 #include <vector>
 
 using namespace sinew;
+using sinew::test::check_pattern_shape;
 
 namespace {
 
@@ -341,38 +344,7 @@ TEST_CASE("classic problems: sparsity patterns are in range, lower triangular, w
     for (const auto& problem : classic_suite()) {
         DYNAMIC_SECTION(problem.name)
         {
-            const auto nlp = problem.make();
-            const int n = nlp->num_variables();
-            const int m = nlp->num_constraints();
-
-            const SparsityPattern& hessian = nlp->hessian_pattern();
-            REQUIRE(hessian.rows.size() == hessian.cols.size());
-            REQUIRE(hessian.nonzeros() > 0);
-            std::set<std::pair<int, int>> seen;
-            for (int k = 0; k < hessian.nonzeros(); ++k) {
-                const int row = hessian.rows[k];
-                const int col = hessian.cols[k];
-                CAPTURE(k, row, col);
-                CHECK(col >= 0);
-                CHECK(row < n);
-                CHECK(row >= col);
-                CHECK(seen.insert({row, col}).second);
-            }
-
-            const SparsityPattern& jacobian = nlp->jacobian_pattern();
-            REQUIRE(jacobian.rows.size() == jacobian.cols.size());
-            CHECK((m == 0) == (jacobian.nonzeros() == 0));
-            seen.clear();
-            for (int k = 0; k < jacobian.nonzeros(); ++k) {
-                const int row = jacobian.rows[k];
-                const int col = jacobian.cols[k];
-                CAPTURE(k, row, col);
-                CHECK(row >= 0);
-                CHECK(row < m);
-                CHECK(col >= 0);
-                CHECK(col < n);
-                CHECK(seen.insert({row, col}).second);
-            }
+            check_pattern_shape(*problem.make());
         }
     }
 }
