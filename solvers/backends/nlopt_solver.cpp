@@ -302,6 +302,10 @@ public:
         const NlpCapabilities kind = capabilities_of(nlp);
         if (kind.has_equalities && !can_.equalities)
             return name_ + " takes no equality constraints";
+        // NLopt throws std::invalid_argument ("too many equality constraints") otherwise.
+        if (kind.num_equalities > nlp.num_variables())
+            return name_ + " takes at most as many equality constraints as variables (this problem has " +
+                   std::to_string(kind.num_equalities) + " on " + std::to_string(nlp.num_variables()) + ")";
         if (kind.has_inequalities && !can_.inequalities)
             return name_ + " takes no inequality constraints";
         if (kind.has_bounds && !can_.bounds)
