@@ -20,6 +20,7 @@ std::string format(const char* pattern, double value)
 } // namespace
 
 ProgressLog::ProgressLog(const SolverOptions& options, const std::string& solver, const std::string& problem)
+    : observer_(options.on_iteration)
 {
     if (options.verbosity < 1)
         return;
@@ -29,6 +30,8 @@ ProgressLog::ProgressLog(const SolverOptions& options, const std::string& solver
 
 void ProgressLog::row(const HistoryRow& r)
 {
+    if (observer_)
+        observer_(r);
     if (!out_)
         return;
     if (rows_++ % 20 == 0)

@@ -2,13 +2,15 @@
 #include "sinew/solvers/result.hpp"
 #include "sinew/solvers/solver_options.hpp"
 
+#include <functional>
 #include <iosfwd>
 #include <string>
 
 namespace sinew {
 
 /// The per-iteration table every solver prints (Ipopt-style), one fixed-width
-/// row per HistoryRow, at verbosity >= 1; silent at 0.
+/// row per HistoryRow, at verbosity >= 1; silent at 0. Every row also goes
+/// to SolverOptions::on_iteration when it is set.
 ///
 ///   iter    objective     inf_pr   inf_du    ||d||   alpha   time_s
 class ProgressLog {
@@ -18,6 +20,7 @@ public:
 
 private:
     std::ostream* out_ = nullptr;  ///< null when silent
+    std::function<void(const HistoryRow&)> observer_;
     int rows_ = 0;
 };
 

@@ -1,4 +1,7 @@
 #pragma once
+#include "sinew/solvers/result.hpp"
+
+#include <functional>
 #include <iosfwd>
 #include <map>
 #include <string>
@@ -28,6 +31,10 @@ struct SolverOptions {
     int verbosity = 0;
     /// Where the table goes; standard output when null.
     std::ostream* log = nullptr;
+    /// Called with every history row as it is recorded, at any verbosity
+    /// (progress of a long comparison); rows of an outer loop's subproblems
+    /// come as the subproblem records them.
+    std::function<void(const HistoryRow&)> on_iteration;
     /// Options passed through by name to the backend (Ipopt options, NLopt
     /// settings). Values are text; the backend parses and checks them.
     std::map<std::string, std::string> backend;

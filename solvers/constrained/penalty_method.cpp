@@ -170,6 +170,12 @@ Result OuterLoop::run()
         const bool raise = !settings_.multipliers || stalled;
         const bool can_raise = settings_.kappa_growth > 1.0 && kappa * settings_.kappa_growth <= settings_.max_kappa;
         if (raise && !can_raise) {
+            // No stiffer subproblem to tighten the gradient target: a feasible
+            // point ends here, and solve() keeps "converged" only if the KKT
+            // residual holds too.
+            if (violation <= options_.constraint_tolerance && inner.status == Status::converged)
+                return finish(Status::converged,
+                              "violation within constr_tol at the largest kappa = " + format_number(kappa), x);
             if (settings_.multipliers)
                 return finish(Status::infeasible, penalty_message(violation, kappa) + ", and it stalls", x);
             return finish(Status::tolerance_not_met, penalty_message(violation, kappa), x);
