@@ -7,6 +7,7 @@
 #include "sinew/core/input_error.hpp"
 #include "sinew/problems/builtin_problems.hpp"
 #include "sinew/problems/quasistatic/builtin_scenes.hpp"
+#include "sinew/problems/quasistatic/constraint_ranks.hpp"
 #include "sinew/problems/quasistatic/scene_reader.hpp"
 #include "sinew/solvers/solver.hpp"
 
@@ -94,6 +95,8 @@ void add_solve_command(CLI::App& app, int& exit_code)
         check_solve(*scene.problem, run.settings.solver, run.settings.options);
         for (const std::string& note : run.notes)
             std::cerr << "sinew: note: " << note << "\n";
+        for (const ConstraintSetRank& rank : constraint_ranks(scene))
+            std::cerr << "sinew: note: " << describe(rank) << "\n";
         const SceneRunOutcome outcome = run_scene(scene, run.settings);
         if (!flags->json.empty())
             write_text_file(flags->json, to_json(outcome.last).dump(2) + "\n");

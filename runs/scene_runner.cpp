@@ -6,7 +6,9 @@
 #include "sinew/core/format_number.hpp"
 #include "sinew/core/input_error.hpp"
 #include "sinew/energies/constraints/fiber_inextensibility.hpp"
+#include "sinew/energies/constraints/weak_fiber_inextensibility.hpp"
 #include "sinew/mesh/vtu_writer.hpp"
+#include "sinew/problems/quasistatic/constraint_ranks.hpp"
 #include "sinew/solvers/solver.hpp"
 
 #include <filesystem>
@@ -20,36 +22,64 @@ Eigen::MatrixXd by_node(const Eigen::VectorXd& v, int dimension)
     return Eigen::Map<const Eigen::MatrixXd>(v.data(), dimension, v.size() / dimension);
 }
 
+/// The element columns of the inextensibility cell data, filled per set.
+struct InextensibilityCells {
+    Eigen::MatrixXd flag, value, multiplier, cell;
+    bool any = false, weak = false;
+};
+
+/// Per element: c_e = a₀ᵀC_e a₀ − 1 at the configuration, and the multiplier
+/// of the element's row (`row_of` the element's index in the set's list).
+template <typename RowOf>
+void add_fiber_elements(FiberInextensibility& fibers, const Eigen::VectorXd& configuration,
+                        const Eigen::VectorXd& multipliers, int offset, RowOf row_of, InextensibilityCells& cells)
+{
+    Eigen::VectorXd c(fibers.num_constraints());
+    fibers.values(configuration, c);
+    for (int k = 0; k < fibers.num_constraints(); ++k) {
+        const int e = fibers.elements()[static_cast<size_t>(k)];
+        const int row = row_of(k);
+        cells.flag(0, e) = 1.0;
+        cells.value(0, e) = c[k];
+        if (offset >= 0 && offset + row < multipliers.size())
+            cells.multiplier(0, e) = multipliers[offset + row];
+    }
+    cells.any = true;
+}
+
 /// Cell data of the scene's inextensible fibers: "inextensible" (1 where an
-/// element carries a₀ᵀCa₀ − 1 = 0), its value c_e and its multiplier λ_e
-/// (Ipopt's sign convention; 0 where the element carries none).
+/// element carries a₀ᵀCa₀ − 1 = 0, alone or in a weak-form cell), the
+/// element's own value c_e and the multiplier of its row (Ipopt's sign
+/// convention: λ_e per element, λ_z of its grid cell in weak form; 0 where
+/// the element carries none), and in weak form "inextensibility_cell", the
+/// grid cell z of each element (−1 elsewhere).
 void add_inextensibility_cells(const Scene& scene, const Eigen::VectorXd& configuration,
-                               const Eigen::VectorXd& multipliers, VtuArrays& cells)
+                               const Eigen::VectorXd& multipliers, VtuArrays& arrays)
 {
     const int count = scene.mesh.num_elements();
-    Eigen::MatrixXd flag = Eigen::MatrixXd::Zero(1, count), value = flag, multiplier = flag;
-    bool any = false;
+    InextensibilityCells cells;
+    cells.flag = cells.value = cells.multiplier = Eigen::MatrixXd::Zero(1, count);
+    cells.cell = Eigen::MatrixXd::Constant(1, count, -1.0);
     for (const auto& set : scene.constraints) {
-        auto* fibers = dynamic_cast<FiberInextensibility*>(set.get());
-        if (!fibers)
-            continue;
-        any = true;
-        Eigen::VectorXd c(fibers->num_constraints());
-        fibers->values(configuration, c);
-        const int offset = scene.problem->constraint_offset(*fibers);
-        for (int k = 0; k < fibers->num_constraints(); ++k) {
-            const int e = fibers->elements()[static_cast<size_t>(k)];
-            flag(0, e) = 1.0;
-            value(0, e) = c[k];
-            if (offset >= 0 && offset + k < multipliers.size())
-                multiplier(0, e) = multipliers[offset + k];
+        const int offset = scene.problem->constraint_offset(*set);
+        if (auto* fibers = dynamic_cast<FiberInextensibility*>(set.get()))
+            add_fiber_elements(*fibers, configuration, multipliers, offset, [](int k) { return k; }, cells);
+        if (auto* weak = dynamic_cast<WeakFiberInextensibility*>(set.get())) {
+            const std::vector<int>& row_of_element = weak->row_of_element();
+            const auto row_of = [&row_of_element](int k) { return row_of_element[static_cast<size_t>(k)]; };
+            add_fiber_elements(weak->per_element(), configuration, multipliers, offset, row_of, cells);
+            for (size_t k = 0; k < row_of_element.size(); ++k)
+                cells.cell(0, weak->per_element().elements()[k]) = row_of_element[k];
+            cells.weak = true;
         }
     }
-    if (!any)
+    if (!cells.any)
         return;
-    cells["inextensible"] = flag;
-    cells["inextensibility_value"] = value;
-    cells["inextensibility_multiplier"] = multiplier;
+    arrays["inextensible"] = cells.flag;
+    arrays["inextensibility_value"] = cells.value;
+    arrays["inextensibility_multiplier"] = cells.multiplier;
+    if (cells.weak)
+        arrays["inextensibility_cell"] = cells.cell;
 }
 
 void write_scene_vtu(const std::string& path, Scene& scene, const Eigen::VectorXd& configuration,
@@ -158,6 +188,13 @@ SceneRunOutcome run_scene(Scene& scene, const SceneRunSettings& settings)
     }
 
     QuasistaticProblem& problem = *scene.problem;
+    nlohmann::json ranks = nlohmann::json::array();
+    if (writes)
+        for (const ConstraintSetRank& r : constraint_ranks(scene))
+            ranks.push_back({{"constraints", r.set},
+                             {"rows", r.rank.rows},
+                             {"rank", r.rank.rank >= 0 ? nlohmann::json(r.rank.rank) : nlohmann::json()},
+                             {"singular_value_ratio", number(r.rank.singular_value_ratio)}});
     nlohmann::json steps = nlohmann::json::array();
     nlohmann::json vtu_files = nlohmann::json::array();
     SceneRunOutcome outcome;
@@ -192,6 +229,7 @@ SceneRunOutcome run_scene(Scene& scene, const SceneRunSettings& settings)
                                 {"description", scene.description},
                                 {"solver", settings.solver},
                                 {"load_steps", n},
+                                {"constraint_ranks", ranks},
                                 {"converged", outcome.converged},
                                 {"total_iterations", outcome.total_iterations},
                                 {"total_time_s", outcome.total_time_s},

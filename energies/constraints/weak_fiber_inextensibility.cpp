@@ -4,9 +4,26 @@
 #include "sinew/energies/potentials/element_rest_shape.hpp"
 
 #include <algorithm>
-#include <map>
+#include <cmath>
+#include <string>
 
 namespace sinew {
+
+namespace {
+
+/// "(i, j, k) of the 4 × 4 × 2 grid" for the linear cell index (x fastest).
+std::string cell_name(int cell, const Eigen::VectorXi& cells)
+{
+    std::string index, grid;
+    for (Eigen::Index d = 0; d < cells.size(); ++d) {
+        index += (d ? ", " : "") + std::to_string(cell % cells[d]);
+        grid += (d ? " × " : "") + std::to_string(cells[d]);
+        cell /= cells[d];
+    }
+    return "(" + index + ") of the " + grid + " grid";
+}
+
+} // namespace
 
 WeakFiberInextensibility::WeakFiberInextensibility(const Mesh& mesh, std::vector<int> elements,
                                                    const Eigen::MatrixXd& fibers, const Eigen::VectorXi& cells)
@@ -15,11 +32,18 @@ WeakFiberInextensibility::WeakFiberInextensibility(const Mesh& mesh, std::vector
     if (cells.size() != dimension || (cells.array() < 1).any())
         throw InputError("weak fiber inextensibility: the grid needs " + std::to_string(dimension) +
                          " cell counts, each at least 1");
+    cells_ = cells;
     per_element_ = std::make_unique<FiberInextensibility>(mesh, std::move(elements), fibers);
     const std::vector<int>& listed = per_element_->elements();
-    const Eigen::VectorXd lower = mesh.nodes.rowwise().minCoeff();
-    const Eigen::VectorXd extent = (mesh.nodes.rowwise().maxCoeff() - lower).cwiseMax(1e-300);
-    std::map<int, int> row_of_cell;
+    // The grid spans the listed elements' nodes; a cell is the row of its index.
+    Eigen::VectorXd lower = Eigen::VectorXd::Constant(dimension, HUGE_VAL), upper = -lower;
+    for (int e : listed)
+        for (Eigen::Index a = 0; a < mesh.elements.rows(); ++a) {
+            lower = lower.cwiseMin(mesh.nodes.col(mesh.elements(a, e)));
+            upper = upper.cwiseMax(mesh.nodes.col(mesh.elements(a, e)));
+        }
+    const Eigen::VectorXd extent = (upper - lower).cwiseMax(1e-300);
+    std::vector<int> members(static_cast<size_t>(cells.prod()), 0);
     volumes_.resize(static_cast<Eigen::Index>(listed.size()));
     for (size_t k = 0; k < listed.size(); ++k) {
         const int e = listed[k];
@@ -32,12 +56,15 @@ WeakFiberInextensibility::WeakFiberInextensibility(const Mesh& mesh, std::vector
             const int i = std::min(cells[d] - 1, static_cast<int>((centroid[d] - lower[d]) / extent[d] * cells[d]));
             cell = cell * cells[d] + std::max(0, i);
         }
-        const auto [found, added] = row_of_cell.emplace(cell, static_cast<int>(row_of_cell.size()));
-        if (added)
-            cell_of_row_.push_back(cell);
-        row_of_element_.push_back(found->second);
+        ++members[static_cast<size_t>(cell)];
+        row_of_element_.push_back(cell);
         volumes_[static_cast<Eigen::Index>(k)] = rest_measure(mesh, e);  // V_e
     }
+    const auto empty = std::find(members.begin(), members.end(), 0);
+    if (empty != members.end())
+        throw InputError("weak fiber inextensibility: cell " +
+                         cell_name(static_cast<int>(empty - members.begin()), cells) +
+                         " over the constrained elements holds no element's centroid; use fewer cells");
     const SparsityPattern& element_jacobian = per_element_->jacobian_pattern();
     for (int entry = 0; entry < element_jacobian.nonzeros(); ++entry)
         jacobian_.add(row_of_element_[static_cast<size_t>(element_jacobian.rows[entry])], element_jacobian.cols[entry]);

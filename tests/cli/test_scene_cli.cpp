@@ -3,6 +3,8 @@
 #include "run_sinew.hpp"
 
 #include <catch2/catch.hpp>
+#include <sstream>
+#include <vector>
 
 using namespace sinew::test;
 
@@ -210,4 +212,53 @@ TEST_CASE("the VTU output of a scene with inextensible fibers holds each element
     for (const auto& lambda : r["constraint_multipliers"])
         largest = std::max(largest, std::abs(lambda.get<double>()));
     CHECK(largest > 0.0);  // gravity bends the beam against its fibers
+}
+
+namespace {
+
+/// The numbers of the DataArray called `name` in a VTU file sinew wrote.
+std::vector<double> vtu_array(const std::string& vtu, const std::string& name)
+{
+    const size_t head = vtu.find("Name=\"" + name + "\"");
+    REQUIRE(head != std::string::npos);
+    const size_t begin = vtu.find('>', head) + 1;
+    std::istringstream numbers(vtu.substr(begin, vtu.find("</DataArray>", begin) - begin));
+    std::vector<double> values;
+    for (double v; numbers >> v;)
+        values.push_back(v);
+    return values;
+}
+
+} // namespace
+
+TEST_CASE("the VTU output of a weak-form scene gives each element its own value, its cell and the cell's multiplier")
+{
+    const std::string folder = scratch("weak_plate_out");
+    std::filesystem::remove_all(folder);
+    const Run run = run_sinew("solve inextensible-plate --output '" + folder + "' --verbosity 0");
+    CAPTURE(run.out, run.err);
+    REQUIRE(run.exit_code == 0);
+    CHECK(run.err.find("constraints 'weak fiber inextensibility' at the starting point: 18 rows, rank 18") !=
+          std::string::npos);
+    const auto result = read_json(folder + "/result.json");
+    CHECK(result["constraint_ranks"][0]["rank"] == 18);
+    const auto& lambda = result["result"]["constraint_multipliers"];
+    REQUIRE(lambda.size() == 18);
+    const std::string vtu = slurp(folder + "/result.vtu");
+    const std::vector<double> cell = vtu_array(vtu, "inextensibility_cell");
+    const std::vector<double> multiplier = vtu_array(vtu, "inextensibility_multiplier");
+    const std::vector<double> flag = vtu_array(vtu, "inextensible");
+    REQUIRE(cell.size() == 576);
+    REQUIRE(multiplier.size() == 576);
+    std::vector<int> members(18, 0);
+    for (size_t e = 0; e < cell.size(); ++e) {
+        const int z = static_cast<int>(cell[e]);
+        REQUIRE(z >= 0);
+        REQUIRE(z < 18);
+        ++members[static_cast<size_t>(z)];
+        CHECK(flag[e] == 1.0);
+        CHECK(multiplier[e] == Approx(lambda[static_cast<size_t>(z)].get<double>()).epsilon(1e-12));
+    }
+    for (int m : members)
+        CHECK(m == 576 / 18);  // 6 × 3 cells of 4 × 4 rectangles, 2 triangles each
 }

@@ -558,3 +558,30 @@ TEST_CASE("weak-form fiber inextensibility rejects a grid with a zero cell count
     CHECK_THROWS_AS(weak_fibers_on(mesh, Eigen::Vector3i(1, 0, 1), rng), InputError);
     CHECK_THROWS_AS(weak_fibers_on(mesh, Eigen::Vector2i(1, 1), rng), InputError);
 }
+
+TEST_CASE("weak-form fiber inextensibility rejects a grid cell that holds no element and spans the listed elements",
+          "[inextensibility]")
+{
+    using Catch::Matchers::Contains;
+    std::mt19937 rng(50);
+    const Mesh mesh = box_of_tets(4, 4, 1, kH);
+    // An L of elements: the hex cells with x or y in the first half; the
+    // 2 × 2 grid over them has its corner cell (1, 1, 0) empty.
+    std::vector<int> l_shape, corner;
+    for (int e = 0; e < mesh.num_elements(); ++e) {
+        Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+        for (int a = 0; a < 4; ++a)
+            centroid += mesh.nodes.col(mesh.elements(a, e)) / 4.0;
+        const bool low_x = centroid.x() < 2 * kH, low_y = centroid.y() < 2 * kH;
+        if (low_x || low_y)
+            l_shape.push_back(e);
+        if (low_x && low_y)
+            corner.push_back(e);
+    }
+    const auto fibers = [&](size_t count) { return random_fibers(3, static_cast<int>(count), rng); };
+    CHECK_THROWS_WITH(WeakFiberInextensibility(mesh, l_shape, fibers(l_shape.size()), Eigen::Vector3i(2, 2, 1)),
+                      Contains("cell (1, 1, 0) of the 2 × 2 × 1 grid") && Contains("holds no element"));
+    // The grid spans the listed elements, not the mesh: the corner alone fills 2 × 2 cells.
+    WeakFiberInextensibility weak(mesh, corner, fibers(corner.size()), Eigen::Vector3i(2, 2, 1));
+    CHECK(weak.num_constraints() == 4);
+}
