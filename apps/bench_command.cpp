@@ -1,5 +1,6 @@
 #include "cli_options.hpp"
 #include "commands.hpp"
+#include "strategies_bench.hpp"
 #include "sinew/runs/output_file.hpp"
 #include "sinew/runs/result_json.hpp"
 
@@ -9,12 +10,14 @@
 #include "sinew/core/input_error.hpp"
 #include "sinew/problems/builtin_problems.hpp"
 #include "sinew/problems/quasistatic/builtin_scenes.hpp"
+#include "sinew/runs/gnuplot_plot.hpp"
 #include "sinew/runs/scene_runner.hpp"
 #include "sinew/solvers/solver.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -25,12 +28,16 @@ namespace {
 
 /// The suite of constitutive-model throughput runs, beside the NLP suites.
 const char* const kKernelSuite = "kernels";
+/// The suite of strategy comparisons (strategies_bench.hpp).
+const char* const kStrategiesSuite = "strategies";
 
 struct BenchFlags {
     std::string suite = "all";
     std::vector<std::string> solvers;
     std::vector<std::string> problems;
     std::string json;
+    std::string output = "strategies-output";
+    bool no_plots = false;
     ReferenceTolerances reference;
     long kernel_evaluations = 1000000;
     SolverFlags solver_flags;
@@ -253,8 +260,12 @@ void add_bench_command(CLI::App& app, int& exit_code)
                  "the published optimum f* (feasible, at f*, stopped on its own criterion; converged where there "
                  "is no f*), 3 otherwise");
     auto flags = std::make_shared<BenchFlags>();
-    command->add_option("--suite", flags->suite, "suite name (see sinew list), kernels, or all")
+    command->add_option("--suite", flags->suite, "suite name (see sinew list), kernels, strategies, or all")
         ->capture_default_str();
+    command->add_option("--output", flags->output,
+                        "suite strategies: folder for each problem's comparison and the performance profiles")
+        ->capture_default_str();
+    command->add_flag("--no-plots", flags->no_plots, "suite strategies: tables and JSON only");
     command->add_option("--solver", flags->solvers, "only these solvers (repeatable)");
     command->add_option("--problem", flags->problems, "only these problems (repeatable)");
     command->add_option("--json", flags->json, "write every run's full result to this file");
@@ -278,17 +289,34 @@ void add_bench_command(CLI::App& app, int& exit_code)
             check_writable(flags->json);  // fail on a bad path before the solve, not after
         const auto suites = builtin_suites();
         const bool kernels_only = flags->suite == kKernelSuite;
-        if (flags->suite != "all" && !kernels_only &&
+        const bool strategies = flags->suite == kStrategiesSuite;
+        if (flags->suite != "all" && !kernels_only && !strategies &&
             std::find(suites.begin(), suites.end(), flags->suite) == suites.end()) {
             std::string valid = "all";
             for (const auto& s : suites)
                 valid += ", " + s;
-            throw InputError("unknown suite '" + flags->suite + "'; valid suites: " + valid + ", " + kKernelSuite);
+            throw InputError("unknown suite '" + flags->suite + "'; valid suites: " + valid + ", " + kKernelSuite +
+                             ", " + kStrategiesSuite);
         }
         for (const auto& name : flags->solvers)
             find_solver(name);
         for (const auto& name : flags->problems)
             find_builtin_problem(name);
+        if (strategies) {
+            if (!flags->no_plots && !gnuplot_available())
+                throw InputError(gnuplot_missing_message());
+            std::error_code error;
+            std::filesystem::create_directories(flags->output, error);
+            if (error)
+                throw InputError("cannot create output folder '" + flags->output + "': " + error.message());
+            nlohmann::json runs = nlohmann::json::array();
+            const bool referenced =
+                run_strategies_bench(flags->output, flags->solvers, flags->problems, options, !flags->no_plots, runs);
+            if (!flags->json.empty())
+                write_text_file(flags->json, nlohmann::json{{"suite", flags->suite}, {"runs", runs}}.dump(2) + "\n");
+            exit_code = referenced ? 0 : 3;
+            return;
+        }
 
         nlohmann::json runs = nlohmann::json::array();
         nlohmann::json kernels = nlohmann::json::array();

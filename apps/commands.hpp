@@ -10,6 +10,7 @@ void add_list_command(CLI::App& app, int& exit_code);
 void add_solve_command(CLI::App& app, int& exit_code);
 void add_check_command(CLI::App& app, int& exit_code);
 void add_bench_command(CLI::App& app, int& exit_code);
+void add_compare_command(CLI::App& app, int& exit_code);
 void add_energy_command(CLI::App& app, int& exit_code);
 
 } // namespace sinew::cli

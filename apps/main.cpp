@@ -17,6 +17,7 @@ int main(int argc, char** argv)
     sinew::cli::add_list_command(app, exit_code);
     sinew::cli::add_solve_command(app, exit_code);
     sinew::cli::add_check_command(app, exit_code);
+    sinew::cli::add_compare_command(app, exit_code);
     sinew::cli::add_bench_command(app, exit_code);
     sinew::cli::add_energy_command(app, exit_code);
     if (argc > 1 && argv[1][0] != '-') {

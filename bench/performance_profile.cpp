@@ -61,4 +61,38 @@ std::string performance_profile_table(const std::vector<StrategyCosts>& strategi
     return out.str();
 }
 
+namespace {
+
+/// 1, every finite ratio r_{p,s} = cost / best cost, and twice the largest, sorted.
+std::vector<double> profile_breakpoints(const std::vector<StrategyCosts>& strategies)
+{
+    std::vector<double> taus = {1.0};
+    if (strategies.empty())
+        return taus;
+    for (size_t p = 0; p < strategies.front().costs.size(); ++p) {
+        double best = kUnsolved;
+        for (const StrategyCosts& s : strategies)
+            best = std::min(best, std::max(s.costs[p], 1e-300));
+        for (const StrategyCosts& s : strategies)
+            if (std::isfinite(s.costs[p]))
+                taus.push_back(std::max(s.costs[p], 1e-300) / best);
+    }
+    std::sort(taus.begin(), taus.end());
+    taus.erase(std::unique(taus.begin(), taus.end()), taus.end());
+    taus.push_back(2.0 * taus.back());
+    return taus;
+}
+
+} // namespace
+
+Plot performance_profile_plot(const std::vector<StrategyCosts>& strategies, const std::string& title)
+{
+    const std::vector<double> taus = profile_breakpoints(strategies);
+    const auto rho = performance_profile(strategies, taus);
+    Plot plot{title, "tau (cost within tau times the best)", "fraction of problems solved", true, false, true, {}};
+    for (size_t s = 0; s < strategies.size(); ++s)
+        plot.series.push_back({strategies[s].strategy, taus, rho[s]});
+    return plot;
+}
+
 } // namespace sinew

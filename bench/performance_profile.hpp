@@ -1,4 +1,6 @@
 #pragma once
+#include "sinew/runs/gnuplot_plot.hpp"
+
 #include <limits>
 #include <string>
 #include <vector>
@@ -21,6 +23,10 @@ std::vector<std::vector<double>> performance_profile(const std::vector<StrategyC
 
 /// A markdown table: strategy | ρ(τ₁) | ρ(τ₂) | …
 std::string performance_profile_table(const std::vector<StrategyCosts>& strategies, const std::vector<double>& taus);
+
+/// The profiles as a step plot against τ (log scale) from 1 to twice the
+/// largest finite ratio r_{p,s}, with a step at every ratio that occurs.
+Plot performance_profile_plot(const std::vector<StrategyCosts>& strategies, const std::string& title);
 
 inline constexpr double kUnsolved = std::numeric_limits<double>::infinity();
 

@@ -9,14 +9,15 @@ install(TARGETS sinew EXPORT sinewTargets
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS sinew_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
-# strict_json.hpp (the scene reader's) and result_json.hpp (the runs' JSON,
-# shared with the CLI) include nlohmann/json, which the library links
+# strict_json.hpp (the scene reader's), result_json.hpp and
+# comparison_report.hpp (the runs' JSON, shared with the CLI) include nlohmann/json, which the library links
 # privately: they are not installed, and no installed header includes them.
 foreach(dir ${SINEW_PUBLIC_HEADER_DIRS})
   install(DIRECTORY ${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/sinew/${dir}
           FILES_MATCHING PATTERN "*.hpp"
           PATTERN "strict_json.hpp" EXCLUDE
-          PATTERN "result_json.hpp" EXCLUDE)
+          PATTERN "result_json.hpp" EXCLUDE
+          PATTERN "comparison_report.hpp" EXCLUDE)
 endforeach()
 
 set(SINEW_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/sinew)

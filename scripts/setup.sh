@@ -15,6 +15,7 @@ packages=(
   libcli11-dev             # command line parsing
   libtet1.5-dev            # TetGen 1.5: tetrahedralization of closed surfaces
   python3                  # an independent XML parser for the VTU writer's test
+  gnuplot-nox              # sinew compare's plots (PNG and SVG by its cairo terminals; no X)
 )
 
 missing=()
