@@ -20,7 +20,9 @@ std::vector<BuiltinProblem> quasistatic_scenes()
         {"codim-sheet", "quasistatic"},             {"cantilever-52k", "quasistatic-large"},
         {"twisted-cantilever-52k", "quasistatic-large"}, {"cantilever-206k", "quasistatic-large"},
         {"twisted-cantilever-206k", "quasistatic-large"}, {"inextensible-plate", "inextensibility"},
-        {"locking-block", "inextensibility"}};
+        {"locking-block", "inextensibility"},       {"helical-block-1k", "inextensibility"},
+        {"helical-block-3k", "inextensibility"},    {"helical-block-6k", "inextensibility"},
+        {"draped-sheet", "inextensibility"}};
     std::vector<BuiltinProblem> out;
     for (const auto& [name, suite] : scenes) {
         // The description is read from the file once, here; make() reads it again.

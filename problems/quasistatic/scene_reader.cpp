@@ -10,6 +10,7 @@
 #include "sinew/energies/potentials/obstacle_penalty_potential.hpp"
 #include "sinew/mesh/box_tets.hpp"
 #include "sinew/mesh/fusiform_muscle.hpp"
+#include "sinew/mesh/helical_fibers.hpp"
 #include "sinew/mesh/mesh_validation.hpp"
 #include "sinew/mesh/read_mesh.hpp"
 #include "sinew/mesh/rectangle_triangles.hpp"
@@ -197,9 +198,29 @@ struct Material {
     std::optional<JsonCursor> fiber_at;        ///< and where it is written
     std::optional<JsonCursor> fiber_list;      ///< a fiber per element of the group, in mesh order
     std::optional<JsonCursor> fiber_of_mesh;   ///< "mesh", said explicitly: the mesh must have a fiber field
+    std::optional<HelixField> helix;           ///< a helical field, evaluated at each element's rest centroid
     double activation = 0.0;
     double damage = 0.0;
 };
+
+/// {"axis": [ax, ay, az], "point": [px, py, pz], "angle_deg": θ}: a helical
+/// fiber field (mesh/helical_fibers.hpp), tets only.
+HelixField helix_field(const JsonCursor& h, ElementKind kind)
+{
+    h.expect_object({"axis", "point", "angle_deg"});
+    if (kind != ElementKind::tetrahedron)
+        h.fail("a helical fiber field needs a tet mesh, this mesh has " + to_string(kind) +
+               " elements (give the fiber as [a...] or per_element)");
+    HelixField out;
+    const Eigen::Vector3d axis = h.at("axis").vector(3);
+    const double length = axis.stableNorm();  // no overflow or underflow on the way
+    if (!(length > 0.0))
+        h.at("axis").fail("axis must not be zero");
+    out.axis = axis / length;
+    out.point = h.at("point").vector_in(3, -kMaxCoordinate, kMaxCoordinate);
+    out.angle = h.at("angle_deg").number_in(-90.0, 90.0) * (M_PI / 180.0);
+    return out;
+}
 
 Material material(const JsonCursor& m, ElementKind kind)
 {
@@ -212,18 +233,25 @@ Material material(const JsonCursor& m, ElementKind kind)
         out.density = v->number_in(0.0, HUGE_VAL);
     if (auto v = m.find("fiber")) {
         // [a…]: constant; {"per_element": [[a…], …]}: one per element of the
-        // group; "mesh": the generator's fiber field (also the default).
+        // group; {"helix": {…}}: a helical field; "mesh": the generator's
+        // fiber field (also the default).
         if (v->is_array()) {
             out.fiber = v->vector();
             out.fiber_at = v;
         } else if (v->is_object()) {
-            v->expect_object({"per_element"});
-            out.fiber_list = v->at("per_element");
-            out.fiber_list->size();  // an array, or an error here
+            v->expect_object({"per_element", "helix"});
+            if (v->keys().size() != 1)
+                v->fail("expected exactly one of per_element, helix");
+            if (auto h = v->find("helix")) {
+                out.helix = helix_field(*h, kind);
+            } else {
+                out.fiber_list = v->at("per_element");
+                out.fiber_list->size();  // an array, or an error here
+            }
         } else if (v->is_string() && v->string() == "mesh") {
             out.fiber_of_mesh = v;
         } else {
-            v->fail("expected an array of numbers, {\"per_element\": [...]}, or \"mesh\"");
+            v->fail("expected an array of numbers, {\"per_element\": [...]}, {\"helix\": {...}}, or \"mesh\"");
         }
     }
     if (auto v = m.find("activation"))
@@ -310,7 +338,7 @@ std::shared_ptr<ConstraintSet> fiber_constraints(const JsonCursor& c, const Scen
     }
     for (size_t g = 0; g < chosen.size(); ++g) {
         const Material& m = materials[g];
-        if (chosen[g] && !m.fiber && !m.fiber_list && mesh.element_fibers.size() == 0)
+        if (chosen[g] && !m.fiber && !m.fiber_list && !m.helix && mesh.element_fibers.size() == 0)
             c.fail("group '" + mesh.group_names[g] + "' has no fiber (give its material a \"fiber\")");
     }
     std::vector<int> elements;
@@ -472,12 +500,18 @@ Scene parse_scene(const std::string& text, const std::string& document, const st
     scene.elastic = at_place(root.at("mesh"), [&] { return std::make_shared<ElasticPotential>(mesh, models); });
     scene.target_activations.resize(mesh.num_elements());
     std::vector<size_t> rank_in_group(materials.size(), 0);
+    std::vector<Eigen::MatrixXd> helical(materials.size());
+    for (size_t g = 0; g < materials.size(); ++g)
+        if (materials[g].helix)
+            helical[g] = helical_fibers(mesh, *materials[g].helix);
     for (int e = 0; e < mesh.num_elements(); ++e) {
         const size_t group = static_cast<size_t>(mesh.element_groups[static_cast<size_t>(e)]);
         const Material& m = materials[group];
         const size_t rank = rank_in_group[group]++;
         if (m.fiber)
             at_place(*m.fiber_at, [&] { scene.elastic->set_fiber(e, *m.fiber); });
+        if (m.helix)
+            scene.elastic->set_fiber(e, helical[group].col(e));
         if (m.fiber_of_mesh && mesh.element_fibers.size() == 0)
             m.fiber_of_mesh->fail("the mesh has no fiber field (give the fiber as [a...] or per_element)");
         if (m.fiber_list) {

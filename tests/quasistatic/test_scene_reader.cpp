@@ -111,6 +111,72 @@ TEST_CASE("fibers per element, in mesh order")
     CHECK_THAT(message, Catch::Contains("materials[0].fiber.per_element: has 13 fibers, group 'default' 12 elements"));
 }
 
+TEST_CASE("a helical fiber field: unit fibers at the angle theta to the axis, tangent to the circle about it")
+{
+    // The axis along x through (0, 0.25, 0.125) passes through the centroids
+    // (0.375, 0.25, 0.125) and (0.875, 0.25, 0.125) of one tet in each cell,
+    // which take â itself.
+    const Eigen::Vector3d axis = Eigen::Vector3d(1, 0, 0), point = Eigen::Vector3d(0, 0.25, 0.125);
+    for (const double degrees : {30.0, -45.0, 90.0}) {
+        CAPTURE(degrees);
+        const Scene scene = parse_scene(
+            replaced(beam_scene(), "\"density\": 1000",
+                     "\"fiber\": {\"helix\": {\"axis\": [2, 0, 0], \"point\": [0, 0.25, 0.125], \"angle_deg\": " +
+                         std::to_string(degrees) + "}}"),
+            "test.json");
+        const double theta = degrees * M_PI / 180.0;
+        int on_axis = 0;
+        for (int e = 0; e < scene.mesh.num_elements(); ++e) {
+            Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+            for (int n = 0; n < 4; ++n)
+                centroid += scene.mesh.nodes.col(scene.mesh.elements(n, e)) / 4.0;
+            const Eigen::Vector3d d = centroid - point;
+            const Eigen::Vector3d r = d - d.dot(axis) * axis;
+            const Eigen::Vector3d a = scene.elastic->fiber(e);
+            CAPTURE(e, centroid.transpose(), a.transpose());
+            CHECK(a.norm() == Approx(1.0).epsilon(1e-14));
+            if (r.norm() < 1e-12) {
+                ++on_axis;
+                CHECK((a - axis).norm() < 1e-15);
+                continue;
+            }
+            // a₀ = cos θ â + sin θ (â × r̂): angle θ to the axis, orthogonal to
+            // r, turning about â in the right-handed sense for θ > 0.
+            CHECK(a.dot(axis) == Approx(std::cos(theta)).margin(1e-14));
+            CHECK(a.dot(r) == Approx(0.0).margin(1e-14));
+            CHECK(a.dot(axis.cross(r.normalized())) == Approx(std::sin(theta)).margin(1e-14));
+        }
+        CHECK(on_axis == 2);
+    }
+}
+
+TEST_CASE("a helical fiber field is for tet meshes, and its keys are checked")
+{
+    const auto with_helix = [](const std::string& helix) {
+        return replaced(beam_scene(), "\"density\": 1000", "\"fiber\": {\"helix\": " + helix + "}");
+    };
+    CHECK_THAT(error_of(with_helix(R"({"axis": [0, 0, 0], "point": [0, 0, 0], "angle_deg": 30})")),
+               Catch::Contains("test.json: materials[0].fiber.helix.axis: axis must not be zero"));
+    CHECK_THAT(error_of(with_helix(R"({"axis": [0, 0, 1], "point": [0, 0, 0], "angle_deg": 95})")),
+               Catch::Contains("test.json: materials[0].fiber.helix.angle_deg: must lie in [-90, 90], got 95"));
+    CHECK_THAT(error_of(with_helix(R"({"axis": [0, 0, 1], "point": [0, 0, 0], "angle": 30})")),
+               Catch::Contains("materials[0].fiber.helix.angle: unknown key; valid keys: axis, point, angle_deg"));
+    CHECK_THAT(error_of(with_helix(R"({"axis": [0, 0, 1], "point": [0, 0, 0]})")),
+               Catch::Contains("materials[0].fiber.helix: missing key 'angle_deg'"));
+    CHECK_THAT(error_of(with_helix(R"({"axis": [0, 0, 1], "point": [0, 0], "angle_deg": 30})")),
+               Catch::Contains("materials[0].fiber.helix.point: expected 3 numbers"));
+    CHECK_THAT(error_of(replaced(beam_scene(), "\"density\": 1000",
+                                 R"("fiber": {"per_element": [], "helix": {"axis": [0, 0, 1], "point": [0, 0, 0], "angle_deg": 30}})")),
+               Catch::Contains("materials[0].fiber: expected exactly one of per_element, helix"));
+    const std::string plate = R"({
+  "mesh": {"generator": "rectangle", "lower": [0, 0], "upper": [1, 0.5], "cells": [2, 1]},
+  "materials": [{"model": "qr-anisotropic", "fiber": {"helix": {"axis": [0, 0, 1], "point": [0, 0, 0], "angle_deg": 30}}}]
+})";
+    CHECK_THAT(error_of(plate),
+               Catch::Contains("test.json: materials[0].fiber.helix: a helical fiber field needs a tet mesh, this mesh "
+                               "has triangle_2d elements"));
+}
+
 TEST_CASE("materials by group, loads, obstacles and the equality-constraint form")
 {
     const std::string text = R"({
@@ -153,7 +219,7 @@ TEST_CASE("every built-in scene file parses")
             continue;  // large: built by the bench, same format as their 6k siblings
         CHECK_NOTHROW(parse_scene(file.text, file.name));
     }
-    CHECK(builtin_scene_files().size() == 11);
+    CHECK(builtin_scene_files().size() == 15);
 }
 
 TEST_CASE("bad scene input gives one InputError naming the document and the JSON path")

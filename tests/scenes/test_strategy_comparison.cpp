@@ -24,12 +24,16 @@ std::vector<ComparedStrategy> strategies(const ComparisonSubject& subject, const
     return chosen;
 }
 
-/// Tolerances tight enough that the agreement is the problem's, not the stopping tests'.
+/// Tolerances tight enough that the agreement is the problem's, not the
+/// stopping tests'. The augmented Lagrangian's x is only as close as its
+/// feasibility allows: the weak-form rows Σ V_e(a₀ᵀC_e a₀ − 1) (seed 004
+/// §4.2.2) carry the cell volume (1.25e-4 m³ in the helical block), and at
+/// max |c| = 1e-10 its x is still 1e-7 m off (measured), so 1e-12.
 SolverOptions tight_options()
 {
     SolverOptions options;
     options.tolerance = 1e-10;
-    options.constraint_tolerance = 1e-10;
+    options.constraint_tolerance = 1e-12;
     return options;
 }
 
@@ -38,7 +42,7 @@ SolverOptions tight_options()
 TEST_CASE("kkt-newton, ipopt and augmented-lagrangian agree on the full-rank inextensibility scenes",
           "[strategy-comparison]")
 {
-    for (const std::string name : {"inextensible-plate"}) {
+    for (const std::string name : {"inextensible-plate", "helical-block-1k", "draped-sheet"}) {
         const ComparisonSubject subject = builtin_scene(name);
         const Comparison comparison = run_comparison(
             subject, strategies(subject, {"ipopt", "kkt-newton", "augmented-lagrangian"}), tight_options());
@@ -56,24 +60,27 @@ TEST_CASE("kkt-newton, ipopt and augmented-lagrangian agree on the full-rank ine
 TEST_CASE("relaxed-kkt and penalty violations fall as 1 over kappa and their solutions approach the exact one",
           "[strategy-comparison]")
 {
-    const ComparisonSubject subject = builtin_scene("inextensible-plate");
-    const std::vector<double> kappas = default_kappas(*subject.make_nlp());
-    REQUIRE(kappas.size() == 3);
-    const Comparison comparison =
-        run_comparison(subject, strategies(subject, {"kkt-newton", "relaxed-kkt", "penalty"}, kappas), {});
-    REQUIRE(comparison.reference == "kkt-newton");
-    for (const char* solver : {"relaxed-kkt", "penalty"}) {
-        INFO(solver);
-        const auto sweep = kappa_sweep(comparison, solver);
-        REQUIRE(sweep.size() == kappas.size());
-        std::vector<double> kappa, violation;
-        for (size_t i = 0; i < sweep.size(); ++i) {
-            kappa.push_back(*sweep[i]->strategy.kappa);
-            violation.push_back(sweep[i]->result.constraint_violation);
-            if (i > 0)  // each hundredfold κ brings the solution about a hundredfold closer
-                CHECK(sweep[i]->reference_distance < 0.05 * sweep[i - 1]->reference_distance);
+    for (const std::string name : {"inextensible-plate", "helical-block-1k", "draped-sheet"}) {
+        INFO(name);
+        const ComparisonSubject subject = builtin_scene(name);
+        const std::vector<double> kappas = default_kappas(*subject.make_nlp());
+        REQUIRE(kappas.size() == 3);
+        const Comparison comparison =
+            run_comparison(subject, strategies(subject, {"kkt-newton", "relaxed-kkt", "penalty"}, kappas), {});
+        REQUIRE(comparison.reference == "kkt-newton");
+        for (const char* solver : {"relaxed-kkt", "penalty"}) {
+            INFO(solver);
+            const auto sweep = kappa_sweep(comparison, solver);
+            REQUIRE(sweep.size() == kappas.size());
+            std::vector<double> kappa, violation;
+            for (size_t i = 0; i < sweep.size(); ++i) {
+                kappa.push_back(*sweep[i]->strategy.kappa);
+                violation.push_back(sweep[i]->result.constraint_violation);
+                if (i > 0)  // each hundredfold κ brings the solution about a hundredfold closer
+                    CHECK(sweep[i]->reference_distance < 0.05 * sweep[i - 1]->reference_distance);
+            }
+            CHECK(log_log_slope(kappa, violation) == Approx(-1.0).margin(0.1));
         }
-        CHECK(log_log_slope(kappa, violation) == Approx(-1.0).margin(0.1));
     }
 }
 
