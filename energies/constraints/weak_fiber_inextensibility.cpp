@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
 
 namespace sinew {
@@ -65,9 +66,19 @@ WeakFiberInextensibility::WeakFiberInextensibility(const Mesh& mesh, std::vector
         throw InputError("weak fiber inextensibility: cell " +
                          cell_name(static_cast<int>(empty - members.begin()), cells) +
                          " over the constrained elements holds no element's centroid; use fewer cells");
+    // One entry per (cell, coordinate): the elements of a cell share nodes, and
+    // a repeated entry would multiply the pattern of JᵀJ (a row with k
+    // entries gives k² products) by the square of the sharing.
     const SparsityPattern& element_jacobian = per_element_->jacobian_pattern();
-    for (int entry = 0; entry < element_jacobian.nonzeros(); ++entry)
-        jacobian_.add(row_of_element_[static_cast<size_t>(element_jacobian.rows[entry])], element_jacobian.cols[entry]);
+    std::map<std::pair<int, int>, int> entry_of;
+    for (int entry = 0; entry < element_jacobian.nonzeros(); ++entry) {
+        const int row = row_of_element_[static_cast<size_t>(element_jacobian.rows[entry])];
+        const int col = element_jacobian.cols[entry];
+        const auto [found, added] = entry_of.emplace(std::make_pair(row, col), jacobian_.nonzeros());
+        if (added)
+            jacobian_.add(row, col);
+        entry_of_element_entry_.push_back(found->second);
+    }
     scratch_.resize(std::max<Eigen::Index>(element_jacobian.nonzeros(), volumes_.size()));
 }
 
@@ -82,10 +93,13 @@ void WeakFiberInextensibility::values(ConstVectorRef x, VectorRef c)
 
 void WeakFiberInextensibility::jacobian_values(ConstVectorRef x, VectorRef values)
 {
-    per_element_->jacobian_values(x, values);
     const SparsityPattern& element_jacobian = per_element_->jacobian_pattern();
-    for (int entry = 0; entry < element_jacobian.nonzeros(); ++entry)
-        values[entry] *= volumes_[element_jacobian.rows[entry]];  // ∂c_z/∂x = Σ V_e ∂c_e/∂x
+    auto per_element = scratch_.head(element_jacobian.nonzeros());
+    per_element_->jacobian_values(x, per_element);
+    values.setZero();
+    for (int entry = 0; entry < element_jacobian.nonzeros(); ++entry)  // ∂c_z/∂x = Σ_{e∈z} V_e ∂c_e/∂x
+        values[entry_of_element_entry_[static_cast<size_t>(entry)]] +=
+            volumes_[element_jacobian.rows[entry]] * per_element[entry];
 }
 
 void WeakFiberInextensibility::hessian_values(ConstVectorRef x, ConstVectorRef lambda, Projection projection,

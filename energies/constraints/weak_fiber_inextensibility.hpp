@@ -46,7 +46,8 @@ private:
     Eigen::VectorXd volumes_;          ///< V_e of each listed element
     Eigen::VectorXi cells_;            ///< grid cells per dimension
     std::vector<int> row_of_element_;  ///< z(e), as a constraint row
-    SparsityPattern jacobian_;         ///< the per-element pattern with rows mapped to cells
+    SparsityPattern jacobian_;         ///< one entry per (cell row, coordinate) the cell's elements touch
+    std::vector<int> entry_of_element_entry_;  ///< the entry of jacobian_ each per-element entry adds to
     Eigen::VectorXd scratch_;          ///< per-element c, J or λ values
 };
 
