@@ -127,6 +127,8 @@ std::string comparison_markdown(const Comparison& comparison)
                                          : comparison.reference + " (converged)")
         << "\n"
         << sweep_lines(comparison);
+    for (const std::string& rank : comparison.constraint_ranks)
+        out << "- " << rank << "\n";
     for (const ComparisonRun& run : comparison.runs)
         if (run.result.status != Status::converged)
             out << "- " << run.strategy.label << ": " << to_string(run.result.status)
@@ -165,6 +167,7 @@ nlohmann::json comparison_json(const Comparison& comparison)
             {"kappa_scale", number(comparison.kappa_scale)},
             {"reference", comparison.reference.empty() ? nlohmann::json() : nlohmann::json(comparison.reference)},
             {"kappa_sweeps", sweeps},
+            {"constraint_ranks", comparison.constraint_ranks},
             {"runs", runs}};
 }
 

@@ -26,7 +26,7 @@ ComparisonSubject scene_subject(const std::function<Scene()>& make_scene, const 
         ComparisonSubject::Outcome outcome;
         outcome.notes = resolved.notes;
         for (const ConstraintSetRank& rank : constraint_ranks(scene))
-            outcome.notes.push_back(describe(rank));
+            outcome.constraint_ranks.push_back(describe(rank));
         outcome.result = run_scene(scene, resolved.settings).last;
         outcome.positions = scene.problem->full_configuration(outcome.result.x);
         return outcome;

@@ -148,6 +148,8 @@ Comparison run_comparison(const ComparisonSubject& subject, const std::vector<Co
         ComparisonSubject::Outcome outcome = subject.run(strategy.solver, run_options);
         if (progress.finished)
             progress.finished(k, count, strategy, outcome);
+        if (k == 0)
+            comparison.constraint_ranks = outcome.constraint_ranks;
         comparison.runs.push_back({strategy, std::move(outcome.result), std::move(outcome.positions)});
     }
     int reference = converged_run(comparison.runs, "kkt-newton");

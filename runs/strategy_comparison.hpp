@@ -35,6 +35,7 @@ struct ComparisonSubject {
         Result result;
         Eigen::VectorXd positions;
         std::vector<std::string> notes;  ///< settings the run overrode or dropped
+        std::vector<std::string> constraint_ranks;  ///< each constraint set's rank at the start (scenes)
     };
     std::function<Outcome(const std::string& solver, const SolverOptions& options)> run;
 };
@@ -81,6 +82,7 @@ struct Comparison {
     /// converged, else Ipopt's when it converged; empty when neither did.
     std::string reference;
     double kappa_scale = 1.0;  ///< kappa_scale() of the subject's NLP
+    std::vector<std::string> constraint_ranks;  ///< as the first run reported them
 };
 
 /// Called as the runs proceed: before a strategy (row null), on each of its
