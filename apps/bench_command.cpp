@@ -7,6 +7,7 @@
 #include "sinew/bench/kernel_benchmark.hpp"
 #include "sinew/bench/performance_profile.hpp"
 #include "sinew/bench/reference_check.hpp"
+#include "sinew/core/format_number.hpp"
 #include "sinew/core/input_error.hpp"
 #include "sinew/problems/builtin_problems.hpp"
 #include "sinew/problems/quasistatic/builtin_scenes.hpp"
@@ -42,15 +43,6 @@ struct BenchFlags {
     long kernel_evaluations = 1000000;
     SolverFlags solver_flags;
 };
-
-std::string format(const char* pattern, double value)
-{
-    if (!std::isfinite(value))
-        return "-";
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, pattern, value);
-    return buffer;
-}
 
 bool contains(const std::vector<std::string>& list, const std::string& name)
 {
@@ -128,9 +120,9 @@ std::string newton_row(const std::string& problem, const std::string& strategy, 
     const auto& st = result.statistics;
     const double one_factorization = st.at("factorization_s") / st.at("factorizations");
     return "| " + problem + " | " + strategy + " | " + std::to_string(result.iterations) + " | " +
-           format("%.0f", st.at("factorizations")) + " | " + format("%.4f", st.at("assembly_s") / result.iterations) +
-           " | " + format("%.4f", one_factorization) + " | " + format("%.3f", result.time_s) + " | " +
-           format("%.2f", result.time_s / (result.iterations * one_factorization)) + " |";
+           table_cell("%.0f", st.at("factorizations")) + " | " + table_cell("%.4f", st.at("assembly_s") / result.iterations) +
+           " | " + table_cell("%.4f", one_factorization) + " | " + table_cell("%.3f", result.time_s) + " | " +
+           table_cell("%.2f", result.time_s / (result.iterations * one_factorization)) + " |";
 }
 
 /// Every built-in problem of the chosen suite × every strategy that accepts it,
@@ -174,10 +166,10 @@ bool run_problems(const BenchFlags& flags, const SolverOptions& options, nlohman
             const bool factorized = st.count("factorizations") && st.at("factorizations") > 0;
             std::cout << "| " << problem.name << " | " << strategy.label << " | " << to_string(result.status)
                       << " | " << result.iterations << " | "
-                      << (factorized ? format("%.0f", st.at("factorizations")) : "-") << " | "
-                      << format("%.10g", result.objective) << " | " << format("%.1e", error) << " | "
-                      << format("%.1e", result.constraint_violation) << " | " << format("%.1e", result.kkt_residual)
-                      << " | " << format("%.4f", result.time_s) << " | " << (good ? "yes" : "no") << " |"
+                      << (factorized ? table_cell("%.0f", st.at("factorizations")) : "-") << " | "
+                      << table_cell("%.10g", result.objective) << " | " << table_cell("%.1e", error) << " | "
+                      << table_cell("%.1e", result.constraint_violation) << " | " << table_cell("%.1e", result.kkt_residual)
+                      << " | " << table_cell("%.4f", result.time_s) << " | " << (good ? "yes" : "no") << " |"
                       << std::endl;
             if (factorized && result.iterations > 0)
                 newton_rows.push_back(newton_row(problem.name, strategy.label, result));
@@ -236,8 +228,8 @@ bool run_kernels(const BenchFlags& flags, nlohmann::json& kernels)
         const bool finite = std::isfinite(run.checksum);
         all_finite = all_finite && finite;
         std::cout << "| " << run.model << " | " << run.shape << " | " << run.evaluations << " | "
-                  << format("%.3f", run.time_s) << " | "
-                  << (finite ? format("%.3g", run.evaluations_per_second) : "FAILED: non-finite output") << " |"
+                  << table_cell("%.3f", run.time_s) << " | "
+                  << (finite ? table_cell("%.3g", run.evaluations_per_second) : "FAILED: non-finite output") << " |"
                   << std::endl;
         kernels.push_back({{"model", run.model},
                            {"shape", run.shape},

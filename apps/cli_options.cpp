@@ -53,4 +53,17 @@ SolverOptions to_solver_options(const SolverFlags& flags)
     return options;
 }
 
+SceneRunRequest scene_request(const CLI::App& command, const SolverOptions& options, int load_steps)
+{
+    SceneRunRequest request;
+    request.options = options;
+    if (command.count("--tol") > 0)
+        request.tolerance = options.tolerance;
+    if (command.count("--max-iter") > 0)
+        request.max_iterations = options.max_iterations;
+    if (command.count("--load-steps") > 0)
+        request.load_steps = load_steps;
+    return request;
+}
+
 } // namespace sinew::cli

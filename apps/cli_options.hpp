@@ -1,4 +1,5 @@
 #pragma once
+#include "sinew/runs/scene_runner.hpp"
 #include "sinew/solvers/solver_options.hpp"
 
 #include <CLI/CLI.hpp>
@@ -29,5 +30,10 @@ void require_non_negative_finite(double value, const std::string& flag);
 
 /// Options with the key=value texts parsed; InputError for a malformed one.
 SolverOptions to_solver_options(const SolverFlags& flags);
+
+/// A scene run request with what the user gave on `command`: --tol,
+/// --max-iter and --load-steps set only when typed, so that the scene's own
+/// settings hold otherwise; `options` as its base options.
+SceneRunRequest scene_request(const CLI::App& command, const SolverOptions& options, int load_steps);
 
 } // namespace sinew::cli

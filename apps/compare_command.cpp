@@ -48,7 +48,10 @@ ComparisonSubject make_subject(const CompareFlags& flags, const SceneRunRequest&
         const std::string path = flags.problem;
         return scene_subject([path] { return read_scene_file(path); }, request);
     }
-    return builtin_subject(find_builtin_problem(flags.problem), request);
+    const BuiltinProblem& problem = find_builtin_problem(flags.problem);
+    if (problem.scene.empty() && request.load_steps)
+        throw InputError("--load-steps applies to scenes only ('" + flags.problem + "' is not one)");
+    return builtin_subject(problem, request);
 }
 
 /// The strategies to run; InputError when a solver the user named refuses
@@ -98,14 +101,7 @@ void add_compare_command(CLI::App& app, int& exit_code)
     command->callback([flags, command, &exit_code] {
         const SolverOptions options = to_solver_options(flags->solver_flags);
         check_kappas(flags->kappas);
-        SceneRunRequest request;
-        if (command->count("--tol") > 0)
-            request.tolerance = options.tolerance;
-        if (command->count("--max-iter") > 0)
-            request.max_iterations = options.max_iterations;
-        if (command->count("--load-steps") > 0)
-            request.load_steps = flags->load_steps;
-        const ComparisonSubject subject = make_subject(*flags, request);
+        const ComparisonSubject subject = make_subject(*flags, scene_request(*command, options, flags->load_steps));
         std::vector<std::string> refusals;
         const std::vector<ComparedStrategy> strategies = chosen_strategies(*flags, subject, options, refusals);
         if (!flags->no_plots && !gnuplot_available())

@@ -76,16 +76,9 @@ void add_solve_command(CLI::App& app, int& exit_code)
         }
 
         Scene scene = scene_file ? read_scene_file(flags->problem) : make_builtin_scene(builtin->scene);
-        SceneRunRequest request;
-        request.options = options;
+        SceneRunRequest request = scene_request(*command, options, flags->load_steps);
         if (command->count("--solver") > 0)
             request.solver = flags->solver;
-        if (command->count("--tol") > 0)
-            request.tolerance = options.tolerance;
-        if (command->count("--max-iter") > 0)
-            request.max_iterations = options.max_iterations;
-        if (command->count("--load-steps") > 0)
-            request.load_steps = flags->load_steps;
         // A scene file writes into its output folder (default <name>-output);
         // a built-in scene only where --output says.
         request.folder = !flags->output.empty() || !scene_file || !scene.output.folder.empty()

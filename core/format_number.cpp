@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 namespace sinew {
 
@@ -16,6 +17,15 @@ std::string format_number(double value)
     char text[32];
     const std::to_chars_result written = std::to_chars(text, text + sizeof(text), value);
     return std::string(text, written.ptr);
+}
+
+std::string table_cell(const char* pattern, double value)
+{
+    if (!std::isfinite(value))
+        return "-";
+    char text[64];
+    std::snprintf(text, sizeof text, pattern, value);
+    return text;
 }
 
 } // namespace sinew

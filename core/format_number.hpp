@@ -8,4 +8,8 @@ namespace sinew {
 /// messages: never the 300 digits of std::to_string(1e300).
 std::string format_number(double value);
 
+/// A table cell: `value` printed with the printf `pattern` (one double
+/// conversion, such as "%.3f" or "%.2e"), or "-" when it is not finite.
+std::string table_cell(const char* pattern, double value);
+
 } // namespace sinew

@@ -1,5 +1,6 @@
 #include "sinew/runs/comparison_report.hpp"
 
+#include "sinew/core/format_number.hpp"
 #include "sinew/runs/gnuplot_plot.hpp"
 #include "sinew/runs/output_file.hpp"
 #include "sinew/runs/result_json.hpp"
@@ -13,19 +14,10 @@ namespace {
 
 const char* const kKappaSolvers[] = {"relaxed-kkt", "penalty"};
 
-std::string format(const char* pattern, double value)
-{
-    if (!std::isfinite(value))
-        return "-";
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, pattern, value);
-    return buffer;
-}
-
 std::string statistic(const Result& result, const char* name)
 {
     const auto found = result.statistics.find(name);
-    return found == result.statistics.end() ? "-" : format("%.0f", found->second);
+    return found == result.statistics.end() ? "-" : table_cell("%.0f", found->second);
 }
 
 std::string table_row(const ComparisonRun& run, double size)
@@ -34,9 +26,9 @@ std::string table_row(const ComparisonRun& run, double size)
     return "| " + run.strategy.label + " | " + (run.strategy.kappa ? kappa_text(*run.strategy.kappa) : "-") +
            " | " + to_string(r.status) + " | " + std::to_string(r.iterations) + " | " +
            statistic(r, "factorizations") + " | " + (r.linear_solves >= 0 ? std::to_string(r.linear_solves) : "-") +
-           " | " + format("%.3f", r.time_s) + " | " + format("%.10g", r.objective) + " | " +
-           format("%.2e", r.constraint_violation) + " | " + format("%.2e", r.kkt_residual) + " | " +
-           format("%.2e", run.reference_distance) + " | " + format("%.2e", run.reference_distance / size) + " |";
+           " | " + table_cell("%.3f", r.time_s) + " | " + table_cell("%.10g", r.objective) + " | " +
+           table_cell("%.2e", r.constraint_violation) + " | " + table_cell("%.2e", r.kkt_residual) + " | " +
+           table_cell("%.2e", run.reference_distance) + " | " + table_cell("%.2e", run.reference_distance / size) + " |";
 }
 
 /// The κ sweep of one solver: κ, final max |c| and distance, and the slope.
@@ -69,11 +61,11 @@ std::string sweep_lines(const Comparison& comparison)
         const Sweep sweep = sweep_of(comparison, solver);
         if (sweep.kappa.size() < 2)
             continue;
-        out += "- " + std::string(solver) + ": d log max|c| / d log κ = " + format("%.3f", sweep.slope) +
+        out += "- " + std::string(solver) + ": d log max|c| / d log κ = " + table_cell("%.3f", sweep.slope) +
                " fitted over κ = " + kappa_text(sweep.kappa.front()) + " … " + kappa_text(sweep.kappa.back()) +
-               ", " + format("%.3f", sweep.last_slope) + " between the two largest (−1: max |c| falls as 1/κ)" +
+               ", " + table_cell("%.3f", sweep.last_slope) + " between the two largest (−1: max |c| falls as 1/κ)" +
                "; distance to the reference " +
-               format("%.2e", sweep.distance.front()) + " → " + format("%.2e", sweep.distance.back()) + "\n";
+               table_cell("%.2e", sweep.distance.front()) + " → " + table_cell("%.2e", sweep.distance.back()) + "\n";
     }
     return out;
 }
@@ -120,8 +112,8 @@ std::string comparison_markdown(const Comparison& comparison)
         << "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const ComparisonRun& run : comparison.runs)
         out << table_row(run, comparison.size) << "\n";
-    out << "\n- scene size (bounding-box diagonal): " << format("%.6g", comparison.size) << "\n"
-        << "- κ scale max diag ∇²f / max diag JᵀJ at the start: " << format("%.3g", comparison.kappa_scale) << "\n"
+    out << "\n- scene size (bounding-box diagonal): " << table_cell("%.6g", comparison.size) << "\n"
+        << "- κ scale max diag ∇²f / max diag JᵀJ at the start: " << table_cell("%.3g", comparison.kappa_scale) << "\n"
         << "- reference: "
         << (comparison.reference.empty() ? "none (neither kkt-newton nor ipopt converged; no distances)"
                                          : comparison.reference + " (converged)")
