@@ -50,8 +50,9 @@ ComparisonProgress comparison_progress(std::ostream& out, const std::string& sub
         if (seconds_since(state->last_line) < 1.0)
             return;
         state->last_line = Clock::now();
-        *state->out << head(*state, index, count, strategy) << ": iteration " << row.iteration << ", "
-                    << seconds(seconds_since(state->start)) << std::endl;
+        *state->out << head(*state, index, count, strategy) << ": iteration " << row.iteration
+                    << (row.outer_iteration > 0 ? " of subproblem " + std::to_string(row.outer_iteration + 1) : "")
+                    << ", " << seconds(seconds_since(state->start)) << std::endl;
     };
     progress.finished = [state](int index, int count, const ComparedStrategy& strategy,
                                 const ComparisonSubject::Outcome& outcome) {
