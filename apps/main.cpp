@@ -3,6 +3,7 @@
 #include "commands.hpp"
 
 #include "sinew/core/input_error.hpp"
+#include "sinew/core/threads.hpp"
 
 #include <exception>
 #include <iostream>
@@ -13,6 +14,14 @@ int main(int argc, char** argv)
     CLI::App app{"sinew: mechanics of muscle, soft tissue and fibrous materials as nonlinear programs"};
     app.require_subcommand(1);
     app.failure_message([](const CLI::App*, const CLI::Error& e) { return std::string(e.what()) + "\n"; });
+    // The one thread setting, before or after the command: OpenMP and OpenBLAS
+    // both get it (core/threads.hpp); default every core the process may use.
+    app.fallthrough();
+    app.add_option_function<int>(
+           "--threads", [](int count) { sinew::set_threads(count); },
+           "threads for assembly (OpenMP) and dense factorization blocks (OpenBLAS), 1 to the cores this process "
+           "may use (default: all of them: " + std::to_string(sinew::available_cores()) + ")")
+        ->type_name("N");
     int exit_code = 0;
     sinew::cli::add_list_command(app, exit_code);
     sinew::cli::add_solve_command(app, exit_code);
@@ -33,6 +42,7 @@ int main(int argc, char** argv)
         }
     }
     try {
+        sinew::set_threads(sinew::available_cores());
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
