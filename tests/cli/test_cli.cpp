@@ -5,6 +5,8 @@
 #include "sinew/solvers/solver.hpp"
 
 #include <catch2/catch.hpp>
+#include <map>
+#include <sstream>
 
 using namespace sinew::test;
 
@@ -143,4 +145,38 @@ TEST_CASE("sinew check runs the Taylor test on cantilever-206k and says why it s
     CHECK(run.out.find("gradient      2.0") != std::string::npos);
     CHECK(run.out.find("hessian       2.0") != std::string::npos);
     CHECK(run.out.find("entrywise check skipped") != std::string::npos);
+}
+
+TEST_CASE("sinew hessian writes the Hessian at the starting point as a Matrix Market lower triangle")
+{
+    const std::string path = scratch("hs071_hessian.mtx");
+    std::filesystem::remove(path);
+    const Run run = run_sinew("hessian hs071 --out '" + path + "'");
+    CAPTURE(run.err);
+    REQUIRE(run.exit_code == 0);
+    std::istringstream file(slurp(path));
+    std::string line;
+    std::getline(file, line);
+    CHECK(line == "%%MatrixMarket matrix coordinate real symmetric");
+    while (file.peek() == '%')
+        std::getline(file, line);
+    int rows = 0, cols = 0, entries = 0;
+    file >> rows >> cols >> entries;
+    REQUIRE(rows == 4);
+    REQUIRE(cols == 4);
+    // f = x1 x4 (x1 + x2 + x3) + x3 at x0 = (1, 5, 5, 1), by hand: ∂²f/∂x1² = 2 x4,
+    // ∂²f/∂x1∂x2 = ∂²f/∂x1∂x3 = x4, ∂²f/∂x1∂x4 = 2 x1 + x2 + x3, ∂²f/∂x2∂x4 = ∂²f/∂x3∂x4 = x1.
+    std::map<std::pair<int, int>, double> expected = {{{1, 1}, 2.0}, {{2, 1}, 1.0}, {{3, 1}, 1.0}, {{4, 1}, 12.0},
+                                                      {{4, 2}, 1.0}, {{4, 3}, 1.0}};
+    for (int k = 0; k < entries; ++k) {
+        int i = 0, j = 0;
+        double value = 0.0;
+        REQUIRE(file >> i >> j >> value);
+        CHECK(i >= j);  // lower triangle
+        const auto found = expected.find({i, j});
+        CHECK(value == (found == expected.end() ? 0.0 : found->second));
+        if (found != expected.end())
+            expected.erase(found);
+    }
+    CHECK(expected.empty());
 }
