@@ -8,7 +8,8 @@
 #
 # Environment: SINEW (default build/apps/sinew of this checkout), PYTHON (default
 # /usr/bin/python3, the interpreter python3-dolfin installs into), CELLS
-# (default "12 19"), FENICS_ARGS (extra arguments for cantilever.py).
+# (default "12 19"), FENICS_ARGS (extra arguments for cantilever.py), THREADS
+# (default 2, for both codes).
 # Raw outputs (sinew's result JSON and iteration table, the FEniCS JSON line
 # and log) go to OUTDIR (default ./fenics-comparison-YYYYmmdd-HHMMSS).
 set -euo pipefail
@@ -18,6 +19,10 @@ SINEW="${SINEW:-$here/../../build/apps/sinew}"
 PYTHON="${PYTHON:-/usr/bin/python3}"
 CELLS="${CELLS:-12 19}"
 FENICS_ARGS="${FENICS_ARGS:-}"
+# The same threads for both: sinew's --threads, and for FEniCS OpenBLAS's
+# threads (MUMPS's dense blocks through PETSc; dolfin assembles serially).
+THREADS="${THREADS:-2}"
+export OPENBLAS_NUM_THREADS="$THREADS" OMP_NUM_THREADS="$THREADS"
 out="${1:-fenics-comparison-$(date +%Y%m%d-%H%M%S)}"
 mkdir -p "$out"
 
@@ -38,7 +43,7 @@ for c in $CELLS; do
         echo "== $scene: sinew (load $(loadavg))" >&2
         echo "$(loadavg)" > "$out/$scene.load-before-sinew"
         status=0
-        "$SINEW" solve "$scene" --solver projected-newton --json "$out/$scene.sinew.json" \
+        "$SINEW" --threads "$THREADS" solve "$scene" --solver projected-newton --json "$out/$scene.sinew.json" \
             > "$out/$scene.sinew.log" 2>&1 || status=$?
         echo "$status" > "$out/$scene.sinew.status"
         tail -n 1 "$out/$scene.sinew.log" >&2
