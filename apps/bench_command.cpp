@@ -1,5 +1,6 @@
 #include "cli_options.hpp"
 #include "commands.hpp"
+#include "reuse_bench.hpp"
 #include "strategies_bench.hpp"
 #include "sinew/runs/output_file.hpp"
 #include "sinew/runs/result_json.hpp"
@@ -10,6 +11,7 @@
 #include "sinew/core/format_number.hpp"
 #include "sinew/core/input_error.hpp"
 #include "sinew/problems/builtin_problems.hpp"
+#include "sinew/problems/quasistatic/builtin_scene_files.hpp"
 #include "sinew/problems/quasistatic/builtin_scenes.hpp"
 #include "sinew/runs/gnuplot_plot.hpp"
 #include "sinew/runs/scene_runner.hpp"
@@ -31,6 +33,8 @@ namespace {
 const char* const kKernelSuite = "kernels";
 /// The suite of strategy comparisons (strategies_bench.hpp).
 const char* const kStrategiesSuite = "strategies";
+/// The suite of factorization reuse, off against on, on every scene (reuse_bench.hpp).
+const char* const kReuseSuite = "reuse";
 
 struct BenchFlags {
     std::string suite = "all";
@@ -252,7 +256,7 @@ void add_bench_command(CLI::App& app, int& exit_code)
                  "the published optimum f* (feasible, at f*, stopped on its own criterion; converged where there "
                  "is no f*), 3 otherwise");
     auto flags = std::make_shared<BenchFlags>();
-    command->add_option("--suite", flags->suite, "suite name (see sinew list), kernels, strategies, or all")
+    command->add_option("--suite", flags->suite, "suite name (see sinew list), kernels, strategies, reuse, or all")
         ->capture_default_str();
     command->add_option("--output", flags->output,
                         "suite strategies: folder for each problem's comparison and the performance profiles")
@@ -282,18 +286,31 @@ void add_bench_command(CLI::App& app, int& exit_code)
         const auto suites = builtin_suites();
         const bool kernels_only = flags->suite == kKernelSuite;
         const bool strategies = flags->suite == kStrategiesSuite;
-        if (flags->suite != "all" && !kernels_only && !strategies &&
+        const bool reuse = flags->suite == kReuseSuite;
+        if (flags->suite != "all" && !kernels_only && !strategies && !reuse &&
             std::find(suites.begin(), suites.end(), flags->suite) == suites.end()) {
             std::string valid = "all";
             for (const auto& s : suites)
                 valid += ", " + s;
             throw InputError("unknown suite '" + flags->suite + "'; valid suites: " + valid + ", " + kKernelSuite +
-                             ", " + kStrategiesSuite);
+                             ", " + kStrategiesSuite + ", " + kReuseSuite);
         }
         for (const auto& name : flags->solvers)
             find_solver(name);
         for (const auto& name : flags->problems)
             find_builtin_problem(name);
+        if (reuse) {
+            if (!flags->solvers.empty())
+                throw InputError("suite reuse chooses its solvers (projected-newton, augmented-lagrangian); drop --solver");
+            for (const auto& name : flags->problems)
+                builtin_scene_text(name);  // scenes only: InputError naming the valid ones
+            nlohmann::json runs = nlohmann::json::array();
+            const bool converged = run_reuse_bench(flags->problems, options, runs);
+            if (!flags->json.empty())
+                write_text_file(flags->json, nlohmann::json{{"suite", flags->suite}, {"runs", runs}}.dump(2) + "\n");
+            exit_code = converged ? 0 : 3;
+            return;
+        }
         if (strategies) {
             if (!flags->no_plots && !gnuplot_available())
                 throw InputError(gnuplot_missing_message());

@@ -33,6 +33,8 @@ std::vector<std::string> linear_solver_names()
     return {"cholmod", "cholmod-ldlt", "mumps-ldlt", "umfpack", "pcg-jacobi", "pcg-ichol"};
 }
 
+bool is_iterative_linear_solver(const std::string& name) { return name.rfind("pcg-", 0) == 0; }
+
 namespace {
 
 /// The iterative solvers' stopping parameters, checked before they are used.

@@ -74,6 +74,10 @@ protected:
 ///   "pcg-ichol"    conjugate gradients with an incomplete Cholesky preconditioner (SPD)
 std::vector<std::string> linear_solver_names();
 
+/// True for the iterative solvers of linear_solver_names() (pcg-*): their
+/// "factorization" is a preconditioner, not A's factors.
+bool is_iterative_linear_solver(const std::string& name);
+
 /// The solver called `name`; InputError listing the valid names otherwise.
 /// Iterative solvers stop at relative residual ‖b − Ax‖/‖b‖ ≤ `tolerance` or
 /// after `max_iterations` (InputError unless tolerance > 0 and max_iterations ≥ 1);

@@ -1,11 +1,15 @@
 #include "sinew/solvers/newton/projected_newton.hpp"
 
+#include "sinew/core/input_error.hpp"
 #include "sinew/solvers/linear/linear_solver.hpp"
 #include "sinew/solvers/newton/active_bounds.hpp"
+#include "sinew/solvers/newton/factorization_reuse.hpp"
+#include "sinew/solvers/newton/forcing_term.hpp"
 #include "sinew/solvers/newton/newton_recorder.hpp"
 #include "sinew/solvers/newton/pattern_matrix.hpp"
 #include "sinew/solvers/newton/regularized_factorization.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -21,7 +25,7 @@ public:
     ProjectedNewtonRun(Nlp& nlp, const SolverOptions& options, const NewtonSettings& settings,
                        const std::string& solver_name)
         : nlp_(nlp), options_(options), settings_(settings), recorder_(options, solver_name, nlp.name()),
-          factorization_(make_linear_solver(settings.linear_solver)),
+          factorization_(make_linear_solver(settings.linear_solver)), reuse_(factorization_, settings.reuse),
           hessian_(nlp.hessian_pattern(), nlp.num_variables()), hessian_values_(nlp.hessian_pattern().nonzeros()),
           projected_(nlp.supports(Projection::clamp)), bounds_(nlp)
     {
@@ -41,6 +45,10 @@ public:
 private:
     Result finish(Status status, const std::string& message)
     {
+        recorder_.add_statistic("cg_iterations", reuse_.cg_iterations());
+        recorder_.add_statistic("reused_factorization_steps", reuse_.reused_steps());
+        recorder_.add_statistic("cg_refused_steps", reuse_.refused_steps());
+        recorder_.add_statistic("cg_s", reuse_.cg_seconds());
         return recorder_.finish(status, message, x_, factorization_);
     }
     void evaluate_gradient(const VectorXd& at, VectorXd& into)
@@ -58,12 +66,30 @@ private:
             hessian_.fix_variables(bounds_.fixed());
         recorder_.end_assembly();
     }
-    /// Factorizes the assembled H (+ shift·I, raised until Cholesky accepts it)
-    /// and solves H d = −∇f (zero at variables held at a bound) into `direction`.
+    /// Solves (H + shift·I) d = −∇f (zero at variables held at a bound) into
+    /// `direction`: by CG on the kept factorization to the forcing term η
+    /// when reuse is on and CG gets there (FactorizationReuse); otherwise by
+    /// factorizing the assembled H + shift·I, the shift raised until Cholesky
+    /// accepts it, and keeping that factorization.
     bool solve_shifted(double& shift, VectorXd& direction, double diagonal_scale)
     {
-        return factorization_.factorize_shifted(hessian_, shift, diagonal_scale) &&
-               factorization_.solve(rhs_, direction);
+        if (reuse_.solve(hessian_.matrix(), shift, rhs_, eta_, direction))
+            return true;
+        if (!factorization_.factorize_shifted(hessian_, shift, diagonal_scale))
+            return false;
+        reuse_.keep();
+        return factorization_.solve(rhs_, direction);
+    }
+    /// The (projected) gradient is at most target_ and, unless an outer
+    /// loop set the target, at most the KKT tolerance solve() checks
+    /// afterwards, kkt_tol · max(1, ‖∇f‖∞): an exact Newton step overshoots
+    /// the first test far enough as a rule, an inexact one not always.
+    bool reached() const
+    {
+        const double norm = bounds_.projected_gradient_norm(x_, gradient_);
+        const bool kkt = settings_.gradient_target > 0.0 ||
+                         norm <= options_.kkt_tolerance * std::max(1.0, gradient_.cwiseAbs().maxCoeff());
+        return norm <= target_ && kkt;
     }
     bool newton_step(bool exact);
     void choose_between_exact_and_projected();
@@ -76,6 +102,15 @@ private:
     NewtonSettings settings_;
     NewtonRecorder recorder_;
     RegularizedFactorization factorization_;
+    FactorizationReuse reuse_;
+    ForcingTerm forcing_;
+    double eta_ = ForcingTerm::eta_max;  ///< this iteration's forcing term
+    /// η of the finishing step: its linear residual, 1e-4 of a gradient
+    /// already below the target, leaves x closer to the solution than the
+    /// target alone promises.
+    static constexpr double kFinishingForcing = 1e-4;
+    double target_ = 0.0;     ///< the (projected) gradient norm at which the solve stops
+    bool finishing_ = false;  ///< this step starts at the target: the finishing step
     PatternMatrix hessian_;
     VectorXd hessian_values_;
     const VectorXd no_multipliers_ = VectorXd(0);
@@ -103,12 +138,18 @@ Result ProjectedNewtonRun::run()
     evaluate_gradient(x_, gradient_);
     const double initial_gradient = bounds_.projected_gradient_norm(x_, gradient_);
     recorder_.record(0, f_, 0.0, initial_gradient, 0.0, 0.0);
-    const double target =
-        settings_.gradient_target > 0.0 ? settings_.gradient_target : options_.tolerance * initial_gradient;
+    target_ = settings_.gradient_target > 0.0 ? settings_.gradient_target : options_.tolerance * initial_gradient;
 
     for (int iteration = 1;; ++iteration) {
-        if (bounds_.projected_gradient_norm(x_, gradient_) <= target)
+        // With reuse on, the point that meets the target gets one finishing
+        // step solved to η = kFinishingForcing, then the solve ends: an
+        // inexact step that just meets the target (η up to ‖∇f‖/‖∇f₀‖) leaves
+        // x as far from the solution as the target allows, where an exact
+        // Newton step would as a rule have overshot it by orders of magnitude.
+        const bool at_target = reached();
+        if (at_target && (finishing_ || !settings_.reuse.enabled || iteration > options_.max_iterations))
             return finish(Status::converged, "gradient reduced by tol");
+        finishing_ = at_target;
         if (iteration > options_.max_iterations)
             return finish(Status::max_iterations, "iteration limit reached");
         recorder_.set_iterations(iteration);
@@ -120,6 +161,7 @@ Result ProjectedNewtonRun::run()
         // sum, and then converges only linearly; the exact Hessian alone
         // overshoots far from the solution (docs/solvers.md, "Projected Newton").
         const bool exact = !projected_ || trust_exact_;
+        eta_ = finishing_ ? kFinishingForcing : forcing_.next(bounds_.projected_gradient_norm(x_, gradient_));
         if (!newton_step(exact))
             return finish(Status::numerical_error, factorization_.failure());
         if (std::optional<Result> stop = line_search_and_update(iteration, exact))
@@ -202,6 +244,8 @@ std::optional<Result> ProjectedNewtonRun::line_search_and_update(int iteration, 
     const LineSearchOutcome search =
         backtracking_line_search(merit, f_, slope, settings_.line_search, gradient_reduced);
     if (search.status != LineSearchStatus::accepted) {
+        if (finishing_)  // x already met the target; the finishing step found nothing to gain
+            return finish(Status::converged, "gradient reduced by tol");
         if (search.status == LineSearchStatus::stalled)
             return finish(Status::stalled, "no measurable decrease of f along the Newton step");
         return finish(Status::line_search_failed,
@@ -227,7 +271,8 @@ std::optional<Result> ProjectedNewtonRun::line_search_and_update(int iteration, 
     else if (exact && rho > 0.75)
         kept_shift_ = kept_shift_ / 10.0 > 1e-8 * diagonal_scale_ ? kept_shift_ / 10.0 : 0.0;
     if (step_below_roundoff(x_, trial_))
-        return finish(Status::stalled, "the Newton step is below the round-off of x");
+        return finish(finishing_ ? Status::converged : Status::stalled,
+                      finishing_ ? "gradient reduced by tol" : "the Newton step is below the round-off of x");
     x_.swap(trial_);
     f_ = search.merit;
     evaluate_gradient(x_, gradient_);
@@ -273,7 +318,16 @@ std::vector<OptionDeclaration> newton_option_declarations()
 {
     return {choice_option("linear_solver", "cholmod", "sparse solver of H d = -grad f", linear_solver_names()),
             real_option("armijo", "1e-4", "sufficient-decrease constant c1 of the Armijo test", 0.0, 0.5, true, true),
-            integer_option("max_backtracks", "40", "halvings of the step before line_search_failed", 1, 1000)};
+            integer_option("max_backtracks", "40", "halvings of the step before line_search_failed", 1, 1000),
+            choice_option("reuse_factorization", "auto",
+                          "on: a step after the first solves H d = -grad f by CG preconditioned with the last "
+                          "factorization, to an Eisenstat-Walker forcing term, and H is factorized afresh when CG "
+                          "needs more than max_cg_iterations; off: H is factorized every iteration; auto: on with "
+                          "a direct linear_solver, off with an iterative one",
+                          {"auto", "on", "off"}),
+            integer_option("max_cg_iterations", "20",
+                           "CG iterations a step on a reused factorization may take before H is factorized afresh",
+                           1, 100000)};
 }
 
 NewtonSettings newton_settings(const OptionValues& values)
@@ -282,6 +336,13 @@ NewtonSettings newton_settings(const OptionValues& values)
     settings.linear_solver = values.text("linear_solver");
     settings.line_search.armijo = values.real("armijo");
     settings.line_search.max_backtracks = values.integer("max_backtracks");
+    const std::string& reuse = values.text("reuse_factorization");
+    const bool iterative = is_iterative_linear_solver(settings.linear_solver);
+    if (reuse == "on" && iterative)
+        throw InputError("reuse_factorization = on needs a direct linear_solver; " + settings.linear_solver +
+                         " is iterative (use reuse_factorization = off or auto)");
+    settings.reuse.enabled = reuse == "on" || (reuse == "auto" && !iterative);
+    settings.reuse.max_cg_iterations = values.integer("max_cg_iterations");
     return settings;
 }
 

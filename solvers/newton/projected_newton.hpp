@@ -1,5 +1,6 @@
 #pragma once
 #include "sinew/solvers/declared_options.hpp"
+#include "sinew/solvers/newton/factorization_reuse.hpp"
 #include "sinew/solvers/newton/line_search.hpp"
 #include "sinew/solvers/solver.hpp"
 
@@ -24,8 +25,14 @@ namespace sinew {
 ///     parameter (×10 when ρ < ¼, ÷10 when ρ > ¾, 0 once the predicted
 ///     decrease is below round-off of f, so convergence ends quadratic).
 /// Problems without a projection always use the shifted exact Hessian.
+/// With reuse_factorization on (the default with a direct linear solver),
+/// a step after the first solves with that H by CG preconditioned with the
+/// last factorization, to an Eisenstat–Walker forcing term, and H is
+/// factorized afresh only when CG would need more than max_cg_iterations
+/// (FactorizationReuse, ForcingTerm).
 /// Bounds are held by ActiveBounds (projection and an ε-active set).
-/// Converged when ‖x − P(x − ∇f)‖∞ ≤ tol · its value at x₀ (‖∇f‖∞ without bounds).
+/// Converged when ‖x − P(x − ∇f)‖∞ ≤ tol · its value at x₀ (‖∇f‖∞ without
+/// bounds) and ≤ kkt_tol · max(1, ‖∇f‖∞), the KKT test solve() makes.
 std::unique_ptr<Solver> make_projected_newton_solver();
 
 /// The settings of the Newton core shared by projected Newton and the
@@ -33,6 +40,7 @@ std::unique_ptr<Solver> make_projected_newton_solver();
 struct NewtonSettings {
     std::string linear_solver = "cholmod";
     LineSearchSettings line_search;
+    ReuseSettings reuse;
     /// Converged when the (projected) gradient's ∞-norm is at most this;
     /// 0: tol × its value at the start (SolverOptions::tolerance).
     double gradient_target = 0.0;
@@ -40,7 +48,7 @@ struct NewtonSettings {
     std::function<void(HistoryRow&)> annotate_row;
 };
 
-/// Declarations of linear_solver, armijo, max_backtracks.
+/// Declarations of linear_solver, armijo, max_backtracks, reuse_factorization, max_cg_iterations.
 std::vector<OptionDeclaration> newton_option_declarations();
 NewtonSettings newton_settings(const OptionValues& values);
 

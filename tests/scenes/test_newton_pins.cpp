@@ -1,7 +1,8 @@
 // Projected Newton's work on every built-in quasistatic scene, pinned:
 // iterations, factorizations, projected iterations, objective evaluations
 // and linear solves, as measured before the Newton core was split into
-// shared pieces (issue 12). A change that moves one of them on purpose moves
+// shared pieces (issue 12), with reuse_factorization off (a factorization
+// every iteration, the only path before issue 14). A change that moves one of them on purpose moves
 // the pin here and the figures in docs/benchmarks.md together. Scenes are run
 // the one way the CLI and the bench run them: the scene runner (runs/).
 #include "sinew/problems/quasistatic/builtin_scenes.hpp"
@@ -27,6 +28,7 @@ void check_pin(const Pin& pin)
     Scene scene = make_builtin_scene(pin.scene);
     SceneRunRequest request;
     request.solver = "projected-newton";
+    request.options.backend["reuse_factorization"] = "off";
     const Result result = run_scene(scene, resolve_scene_run(scene, request).settings).last;
     CAPTURE(pin.scene, result.message);
     REQUIRE(result.status == Status::converged);
@@ -51,3 +53,58 @@ TEST_CASE("projected Newton work is pinned on muscle-spindle", "[pins]") { check
 TEST_CASE("projected Newton work is pinned on qr-plate", "[pins]") { check_pin({"qr-plate", 9, 17, 1, 10, 9}); }
 
 TEST_CASE("projected Newton work is pinned on codim-sheet", "[pins]") { check_pin({"codim-sheet", 13, 37, 1, 15, 14}); }
+
+namespace {
+
+/// The work of the default path, reuse_factorization on (issue 14): CG on
+/// the kept factorization, refactorizing when CG would take more than
+/// max_cg_iterations, and the finishing step; steps CG delivered, steps it
+/// refused.
+struct ReusePin {
+    const char* scene;
+    int iterations;
+    int factorizations;
+    int cg_iterations;
+    int reused_steps;
+    int refused_steps;
+};
+
+void check_reuse_pin(const ReusePin& pin)
+{
+    Scene scene = make_builtin_scene(pin.scene);
+    const Result result = run_scene(scene, resolve_scene_run(scene, SceneRunRequest{}).settings).last;
+    CAPTURE(pin.scene, result.message);
+    REQUIRE(result.status == Status::converged);
+    CHECK(result.iterations == pin.iterations);
+    CHECK(result.statistics.at("factorizations") == pin.factorizations);
+    CHECK(result.statistics.at("cg_iterations") == pin.cg_iterations);
+    CHECK(result.statistics.at("reused_factorization_steps") == pin.reused_steps);
+    CHECK(result.statistics.at("cg_refused_steps") == pin.refused_steps);
+}
+
+} // namespace
+
+TEST_CASE("reused-factorization Newton work is pinned on cantilever-6k", "[pins]")
+{
+    check_reuse_pin({"cantilever-6k", 22, 3, 159, 19, 2});
+}
+
+TEST_CASE("reused-factorization Newton work is pinned on twisted-cantilever-6k", "[pins]")
+{
+    check_reuse_pin({"twisted-cantilever-6k", 12, 2, 101, 10, 1});
+}
+
+TEST_CASE("reused-factorization Newton work is pinned on muscle-spindle", "[pins]")
+{
+    check_reuse_pin({"muscle-spindle", 18, 15, 230, 11, 6});
+}
+
+TEST_CASE("reused-factorization Newton work is pinned on qr-plate", "[pins]")
+{
+    check_reuse_pin({"qr-plate", 11, 13, 103, 7, 3});
+}
+
+TEST_CASE("reused-factorization Newton work is pinned on codim-sheet", "[pins]")
+{
+    check_reuse_pin({"codim-sheet", 5, 2, 9, 4, 0});
+}

@@ -1,0 +1,38 @@
+#include "sinew/solvers/newton/factorization_reuse.hpp"
+
+#include "sinew/solvers/newton/preconditioned_cg.hpp"
+
+#include <chrono>
+
+namespace sinew {
+
+using Eigen::VectorXd;
+
+FactorizationReuse::FactorizationReuse(RegularizedFactorization& factorization, ReuseSettings settings)
+    : factorization_(factorization), settings_(settings)
+{
+}
+
+bool FactorizationReuse::solve(const SparseMatrix& lower, double shift, const VectorXd& b, double eta, VectorXd& d)
+{
+    if (!kept_)
+        return false;
+    const auto start = std::chrono::steady_clock::now();
+    auto multiply = [&](const VectorXd& v, VectorXd& product) {
+        product.noalias() = lower.selfadjointView<Eigen::Lower>() * v;  // A v
+        if (shift > 0.0)
+            product += shift * v;  // + σ v
+    };
+    auto precondition = [&](const VectorXd& r, VectorXd& z) { return factorization_.solve(r, z); };  // z = A₀⁻¹ r
+    const CgOutcome outcome = preconditioned_cg(multiply, precondition, b, eta, settings_.max_cg_iterations, d);
+    cg_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    cg_iterations_ += outcome.iterations;
+    if (outcome.status == CgStatus::converged) {
+        ++reused_steps_;
+        return true;
+    }
+    ++refused_steps_;
+    return false;
+}
+
+} // namespace sinew

@@ -1,0 +1,189 @@
+// Inexact Newton on a reused factorization (issue 14): preconditioned CG's
+// three ways to stop, the Eisenstat-Walker forcing terms, and projected
+// Newton with reuse on against reuse off.
+#include "sinew/core/input_error.hpp"
+#include "sinew/problems/builtin_problems.hpp"
+#include "sinew/solvers/newton/forcing_term.hpp"
+#include "sinew/solvers/newton/preconditioned_cg.hpp"
+#include "sinew/solvers/solver.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/QR>
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+using namespace sinew;
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+namespace {
+
+/// A random symmetric positive definite n × n matrix with eigenvalues in [1, condition].
+MatrixXd random_spd(int n, double condition, unsigned seed)
+{
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> normal;
+    MatrixXd G(n, n);
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            G(i, j) = normal(rng);
+    const Eigen::HouseholderQR<MatrixXd> qr(G);
+    const MatrixXd Q = qr.householderQ();
+    VectorXd eigenvalues(n);
+    for (int i = 0; i < n; ++i)
+        eigenvalues[i] = std::pow(condition, static_cast<double>(i) / (n - 1));
+    return Q * eigenvalues.asDiagonal() * Q.transpose();
+}
+
+VectorXd random_vector(int n, unsigned seed)
+{
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> normal;
+    VectorXd v(n);
+    for (int i = 0; i < n; ++i)
+        v[i] = normal(rng);
+    return v;
+}
+
+} // namespace
+
+TEST_CASE("preconditioned CG reaches the relative residual it is asked for")
+{
+    const int n = 40;
+    const MatrixXd A = random_spd(n, 1e4, 1);
+    const VectorXd b = random_vector(n, 2);
+    auto multiply = [&](const VectorXd& v, VectorXd& Av) { Av = A * v; };
+    auto identity = [](const VectorXd& r, VectorXd& z) {
+        z = r;
+        return true;
+    };
+    for (double eta : {0.5, 1e-3, 1e-10}) {
+        CAPTURE(eta);
+        VectorXd d;
+        const CgOutcome outcome = preconditioned_cg(multiply, identity, b, eta, 1000, d);
+        REQUIRE(outcome.status == CgStatus::converged);
+        const double residual = (b - A * d).norm() / b.norm();
+        CHECK(residual <= eta * (1.0 + 1e-6));
+        CHECK(outcome.relative_residual == Approx(residual).epsilon(1e-4).margin(1e-14));
+        // dᵀ(Ad − b) = 0 in exact arithmetic, so Newton's predicted decrease
+        // −½∇fᵀd is the model's ½dᵀAd; round-off (CG's lost orthogonality
+        // over tens of iterations at condition 1e4) leaves a small fraction.
+        CHECK(std::abs(d.dot(A * d - b)) <= 1e-3 * d.dot(A * d));
+    }
+}
+
+TEST_CASE("preconditioned CG with a nearby factorization as preconditioner needs few iterations")
+{
+    const int n = 60;
+    const MatrixXd A = random_spd(n, 1e6, 3);
+    const MatrixXd nearby = A + 1e-3 * random_spd(n, 10.0, 4);  // the matrix factorized "earlier"
+    const Eigen::LLT<MatrixXd> factors(nearby);
+    const VectorXd b = random_vector(n, 5);
+    auto multiply = [&](const VectorXd& v, VectorXd& Av) { Av = A * v; };
+    auto factorized = [&](const VectorXd& r, VectorXd& z) {
+        z = factors.solve(r);
+        return true;
+    };
+    auto identity = [](const VectorXd& r, VectorXd& z) {
+        z = r;
+        return true;
+    };
+    VectorXd d;
+    const CgOutcome with_factors = preconditioned_cg(multiply, factorized, b, 1e-10, 1000, d);
+    const CgOutcome without = preconditioned_cg(multiply, identity, b, 1e-10, 1000, d);
+    CAPTURE(with_factors.iterations, without.iterations);
+    REQUIRE(with_factors.status == CgStatus::converged);
+    CHECK(with_factors.iterations <= 6);
+    CHECK(without.iterations > 5 * with_factors.iterations);
+}
+
+TEST_CASE("preconditioned CG stops on non-positive curvature, at its limit, and on a failed preconditioner")
+{
+    auto identity = [](const VectorXd& r, VectorXd& z) {
+        z = r;
+        return true;
+    };
+    VectorXd d;
+    SECTION("indefinite")
+    {
+        const MatrixXd A = Eigen::Vector3d(1.0, -2.0, 3.0).asDiagonal();
+        auto multiply = [&](const VectorXd& v, VectorXd& Av) { Av = A * v; };
+        const CgOutcome outcome = preconditioned_cg(multiply, identity, VectorXd::Ones(3), 1e-12, 100, d);
+        CHECK(outcome.status == CgStatus::negative_curvature);
+    }
+    SECTION("iteration limit")
+    {
+        const MatrixXd A = random_spd(30, 1e8, 6);
+        auto multiply = [&](const VectorXd& v, VectorXd& Av) { Av = A * v; };
+        const CgOutcome outcome = preconditioned_cg(multiply, identity, random_vector(30, 7), 1e-12, 3, d);
+        CHECK(outcome.status == CgStatus::iteration_limit);
+        CHECK(outcome.iterations == 3);
+        CHECK(outcome.relative_residual > 1e-12);
+    }
+    SECTION("failed preconditioner")
+    {
+        auto multiply = [](const VectorXd& v, VectorXd& Av) { Av = v; };
+        auto failing = [](const VectorXd&, VectorXd&) { return false; };
+        const CgOutcome outcome = preconditioned_cg(multiply, failing, VectorXd::Ones(4), 1e-8, 10, d);
+        CHECK(outcome.status == CgStatus::preconditioner_failed);
+    }
+    SECTION("zero right-hand side")
+    {
+        auto multiply = [](const VectorXd& v, VectorXd& Av) { Av = v; };
+        const CgOutcome outcome = preconditioned_cg(multiply, identity, VectorXd::Zero(4), 1e-8, 10, d);
+        CHECK(outcome.status == CgStatus::converged);
+        CHECK(outcome.iterations == 0);
+        CHECK(d.isZero(0.0));
+    }
+}
+
+TEST_CASE("Eisenstat-Walker forcing terms: loose at first, safeguarded, O(gradient) near the solution")
+{
+    ForcingTerm forcing;
+    // η₀ = η_max
+    CHECK(forcing.next(1.0) == ForcingTerm::eta_max);
+    // ‖g‖ 1 → 0.95: γ·0.95² ≈ 0.81 above η_max = 0.5
+    CHECK(forcing.next(0.95) == ForcingTerm::eta_max);
+    // 0.95 → 0.3: γ·(0.3/0.95)² ≈ 0.090, but the safeguard γ·0.5² = 0.225 > 0.1 holds it up
+    CHECK(forcing.next(0.3) == Approx(0.225));
+    // 0.3 → 0.03: γ·0.1² = 0.009; the safeguard γ·0.225² ≈ 0.046 < 0.1 is off; ‖g‖/‖g₀‖ = 0.03 is above
+    CHECK(forcing.next(0.03) == Approx(0.009));
+    // 0.03 → 0.02: γ·(2/3)² = 0.4, capped by ‖g‖/‖g₀‖ = 0.02
+    CHECK(forcing.next(0.02) == Approx(0.02));
+}
+
+TEST_CASE("projected Newton reusing factorizations reaches the same minimum with fewer factorizations")
+{
+    auto nlp = find_builtin_problem("rosenbrock1000").make();
+    SolverOptions plain;
+    plain.backend["reuse_factorization"] = "off";
+    SolverOptions reused;
+    reused.backend["reuse_factorization"] = "on";
+    const Result off = solve(*nlp, "projected-newton", plain);
+    const Result on = solve(*nlp, "projected-newton", reused);
+    CAPTURE(off.message, on.message, off.iterations, on.iterations);
+    REQUIRE(off.status == Status::converged);
+    REQUIRE(on.status == Status::converged);
+    CHECK(off.statistics.at("cg_iterations") == 0);
+    CHECK(off.statistics.at("factorizations") >= off.iterations);
+    CHECK(on.statistics.at("cg_iterations") > 0);
+    CHECK(on.statistics.at("reused_factorization_steps") > 0);
+    CHECK(on.statistics.at("factorizations") < on.iterations);
+    CHECK((on.x - off.x).cwiseAbs().maxCoeff() < 1e-6);
+}
+
+TEST_CASE("reuse_factorization on needs a direct linear solver, auto follows the solver")
+{
+    auto nlp = find_builtin_problem("rosenbrock2").make();
+    SolverOptions options;
+    options.backend = {{"linear_solver", "pcg-jacobi"}, {"reuse_factorization", "on"}};
+    CHECK_THROWS_AS(solve(*nlp, "projected-newton", options), InputError);
+    options.backend["reuse_factorization"] = "auto";
+    const Result r = solve(*nlp, "projected-newton", options);
+    CHECK(r.status == Status::converged);
+    CHECK(r.statistics.at("cg_iterations") == 0);
+    options.backend = {{"max_cg_iterations", "0"}};
+    CHECK_THROWS_AS(solve(*nlp, "projected-newton", options), InputError);
+}
