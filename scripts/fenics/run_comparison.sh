@@ -9,7 +9,7 @@
 # Environment: SINEW (default build/apps/sinew of this checkout), PYTHON (default
 # /usr/bin/python3, the interpreter python3-dolfin installs into), CELLS
 # (default "12 19"), FENICS_ARGS (extra arguments for cantilever.py), THREADS
-# (default 2, for both codes).
+# (default 2, for both codes), VARIANTS (default "straight twisted").
 # Raw outputs (sinew's result JSON and iteration table, the FEniCS JSON line
 # and log) go to OUTDIR (default ./fenics-comparison-YYYYmmdd-HHMMSS).
 set -euo pipefail
@@ -22,6 +22,7 @@ FENICS_ARGS="${FENICS_ARGS:-}"
 # The same threads for both: sinew's --threads, and for FEniCS OpenBLAS's
 # threads (MUMPS's dense blocks through PETSc; dolfin assembles serially).
 THREADS="${THREADS:-2}"
+VARIANTS="${VARIANTS:-straight twisted}"
 export OPENBLAS_NUM_THREADS="$THREADS" OMP_NUM_THREADS="$THREADS"
 out="${1:-fenics-comparison-$(date +%Y%m%d-%H%M%S)}"
 mkdir -p "$out"
@@ -38,7 +39,7 @@ echo "warming the FEniCS JIT cache ..." >&2
 
 for c in $CELLS; do
     case "$c" in 6) k=6k ;; 12) k=52k ;; 19) k=206k ;; *) echo "cells must be 6, 12 or 19" >&2; exit 2 ;; esac
-    for variant in straight twisted; do
+    for variant in $VARIANTS; do
         if [ "$variant" = twisted ]; then scene="twisted-cantilever-$k"; flag=--twisted; else scene="cantilever-$k"; flag=; fi
         echo "== $scene: sinew (load $(loadavg))" >&2
         echo "$(loadavg)" > "$out/$scene.load-before-sinew"
@@ -59,9 +60,9 @@ for c in $CELLS; do
     done
 done
 
-"$PYTHON" - "$out" $CELLS <<'EOF'
+"$PYTHON" - "$out" "$VARIANTS" $CELLS <<'EOF'
 import json, os, sys
-out, cells = sys.argv[1], sys.argv[2:]
+out, variants, cells = sys.argv[1], sys.argv[2].split(), sys.argv[3:]
 size = {"6": "6k", "12": "52k", "19": "206k"}
 def load(path):
     try:
@@ -85,8 +86,8 @@ print("| scene | tets | ours: iterations | ours: wall s | FEniCS: load steps | F
       "FEniCS: wall s | FEniCS: failed attempts s | ratio FEniCS/ours | energy ours | energy FEniCS | load avg before ours / FEniCS |")
 print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|")
 for c in cells:
-    for prefix in ("cantilever-", "twisted-cantilever-"):
-        scene = prefix + size[c]
+    for variant in variants:
+        scene = ("twisted-" if variant == "twisted" else "") + "cantilever-" + size[c]
         ours = load(os.path.join(out, scene + ".sinew.json"))
         fe = load(os.path.join(out, scene + ".fenics.json"))
         o_it = "%d%s" % (ours["iterations"], "" if ours.get("converged") else " (not converged)") if ours else "failed"
