@@ -66,7 +66,9 @@ TEST_CASE("preconditioned CG reaches the relative residual it is asked for")
         REQUIRE(outcome.status == CgStatus::converged);
         const double residual = (b - A * d).norm() / b.norm();
         CHECK(residual <= eta * (1.0 + 1e-6));
-        CHECK(outcome.relative_residual == Approx(residual).epsilon(1e-4).margin(1e-14));
+        // The recurrence r ← r − αAp drifts from b − Ad by round-off, about
+        // ε·κ(A) = 2e-12 of ‖b‖ here: visible only at the smallest η.
+        CHECK(outcome.relative_residual == Approx(residual).epsilon(1e-4).margin(1e-11));
         // dᵀ(Ad − b) = 0 in exact arithmetic, so Newton's predicted decrease
         // −½∇fᵀd is the model's ½dᵀAd; round-off (CG's lost orthogonality
         // over tens of iterations at condition 1e4) leaves a small fraction.
