@@ -23,3 +23,23 @@ set_target_properties(TetGen::tet PROPERTIES IMPORTED_LOCATION "${TETGEN_LIBRARY
 find_package(OpenMP REQUIRED)
 # nlohmann-json3-dev: header-only; scene files and the CLI's JSON.
 find_package(nlohmann_json 3 REQUIRED)
+
+# PETSc 3.18 (libpetsc-real-dev, with OpenMPI and hypre): the petsc-* linear
+# solvers (solvers/linear/petsc_solver.hpp). Optional: without it the build
+# goes on, those solvers are not listed, and asking for one names the package.
+option(SINEW_WITH_PETSC "Build the petsc-* linear solvers when PETSc is found" ON)
+set(SINEW_HAVE_PETSC OFF)
+if(SINEW_WITH_PETSC)
+  pkg_check_modules(PETSc QUIET IMPORTED_TARGET PETSc)
+  if(PETSc_FOUND)
+    # PETSc's headers include mpi.h; the MPI C library without its C++ bindings.
+    set(MPI_CXX_SKIP_MPICXX ON)
+    find_package(MPI COMPONENTS CXX)
+  endif()
+  if(PETSc_FOUND AND MPI_CXX_FOUND)
+    set(SINEW_HAVE_PETSC ON)
+    message(STATUS "PETSc ${PETSc_VERSION} found: the petsc-* linear solvers are built")
+  else()
+    message(STATUS "PETSc not found: the petsc-* linear solvers are left out (bash scripts/setup.sh installs libpetsc-real-dev)")
+  endif()
+endif()

@@ -1,4 +1,5 @@
 #pragma once
+#include "sinew/core/near_null_space.hpp"
 #include "sinew/core/projection.hpp"
 #include "sinew/core/sparsity_pattern.hpp"
 
@@ -69,6 +70,10 @@ public:
     /// False when hessian() is an approximation (Gauss-Newton, say): Ipopt
     /// then uses its limited-memory quasi-Newton mode instead.
     virtual bool exact_hessian() const { return true; }
+    /// Vectors that the objective's Hessian at x nearly annihilates (the
+    /// rigid-body modes of an elastic body), for an algebraic multigrid
+    /// preconditioner; none unless a problem knows them.
+    virtual NearNullSpace near_null_space(ConstVectorRef /*x*/) const { return {}; }
 
 protected:
     /// hessian() with Projection::none.

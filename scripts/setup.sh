@@ -16,6 +16,7 @@ packages=(
   libtet1.5-dev            # TetGen 1.5: tetrahedralization of closed surfaces
   python3                  # an independent XML parser for the VTU writer's test
   gnuplot-nox              # sinew compare's plots (PNG and SVG by its cairo terminals; no X)
+  libpetsc-real-dev        # PETSc 3.18 with OpenMPI and hypre: the petsc-* linear solvers
 )
 
 missing=()

@@ -1,9 +1,11 @@
 #include "sinew/problems/quasistatic/quasistatic_problem.hpp"
 
 #include "sinew/core/input_error.hpp"
+#include "sinew/problems/quasistatic/rigid_body_modes.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 
 namespace sinew {
@@ -287,6 +289,16 @@ Eigen::VectorXd QuasistaticProblem::full_configuration(ConstVectorRef x) const
     for (int k = 0; k < static_cast<int>(free_coordinates_.size()); ++k)
         configuration[free_coordinates_[k]] = x[k];
     return configuration;
+}
+
+NearNullSpace QuasistaticProblem::near_null_space(ConstVectorRef x) const
+{
+    std::vector<int> variables = free_coordinates_;
+    if (!eliminating()) {
+        variables.resize(rest_.size());
+        std::iota(variables.begin(), variables.end(), 0);
+    }
+    return rigid_body_modes(full_configuration(x), potential_->dimension(), variables);
 }
 
 Eigen::VectorXd QuasistaticProblem::variables_of(ConstVectorRef configuration) const

@@ -76,6 +76,8 @@ public:
     void jacobian_values(ConstVectorRef x, VectorRef values) override;
     const SparsityPattern& hessian_pattern() const override { return hessian_pattern_; }
     bool supports(Projection) const override { return true; }
+    /// The rigid-body modes of the nodes at x (rigid_body_modes), on the variables.
+    NearNullSpace near_null_space(ConstVectorRef x) const override;
 
     DirichletStrategy strategy() const { return options_.dirichlet; }
     /// The first row of `set` among the NLP's constraints; −1 when the problem does not hold it.

@@ -41,6 +41,7 @@ public:
     const SparsityPattern& hessian_pattern() const override { return schur_.pattern(); }
     bool supports(Projection projection) const override { return problem_.supports(projection); }
     bool exact_hessian() const override { return problem_.exact_hessian(); }
+    NearNullSpace near_null_space(ConstVectorRef x) const override { return problem_.near_null_space(x); }
 
 protected:
     void hessian_values(ConstVectorRef x, double sigma, ConstVectorRef lambda, VectorRef values) override;

@@ -4,6 +4,7 @@
 #include "sinew/solvers/linear/cholmod_solver.hpp"
 #include "sinew/solvers/linear/mumps_solver.hpp"
 #include "sinew/solvers/linear/pcg_solver.hpp"
+#include "sinew/solvers/linear/petsc_solver.hpp"
 #include "sinew/solvers/linear/umfpack_solver.hpp"
 
 #include <cmath>
@@ -30,10 +31,35 @@ std::string to_string(LinearStatus status)
 
 std::vector<std::string> linear_solver_names()
 {
-    return {"cholmod", "cholmod-ldlt", "mumps-ldlt", "umfpack", "pcg-jacobi", "pcg-ichol"};
+    std::vector<std::string> names = {"cholmod", "cholmod-ldlt", "mumps-ldlt", "umfpack", "pcg-jacobi", "pcg-ichol"};
+    if (petsc_linear_solvers_built()) {
+        names.emplace_back("petsc-cg-gamg");
+        names.emplace_back("petsc-cg-hypre");
+    }
+    return names;
 }
 
-bool is_iterative_linear_solver(const std::string& name) { return name.rfind("pcg-", 0) == 0; }
+std::vector<std::string> known_linear_solver_names()
+{
+    std::vector<std::string> names = linear_solver_names();
+    if (!petsc_linear_solvers_built()) {
+        names.emplace_back("petsc-cg-gamg");
+        names.emplace_back("petsc-cg-hypre");
+    }
+    return names;
+}
+
+void check_linear_solver_built(const std::string& name)
+{
+    if (name.rfind("petsc-", 0) == 0 && !petsc_linear_solvers_built())
+        throw InputError("linear solver '" + name + "' needs PETSc, and this sinew was built without it: "
+                         "bash scripts/setup.sh installs libpetsc-real-dev, then configure and build again");
+}
+
+bool is_iterative_linear_solver(const std::string& name)
+{
+    return name.rfind("pcg-", 0) == 0 || name.rfind("petsc-", 0) == 0;
+}
 
 namespace {
 
@@ -69,6 +95,12 @@ std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name, double
     if (name == "pcg-ichol") {
         check_iteration_limits(name, tolerance, max_iterations);
         return make_pcg_ichol_solver(tolerance, max_iterations);
+    }
+    if (name == "petsc-cg-gamg" || name == "petsc-cg-hypre") {
+        check_linear_solver_built(name);
+        check_iteration_limits(name, tolerance, max_iterations);
+        const auto preconditioner = name == "petsc-cg-gamg" ? PetscPreconditioner::gamg : PetscPreconditioner::hypre;
+        return make_petsc_cg_solver(preconditioner, tolerance, max_iterations);
     }
     std::string valid;
     for (const std::string& known : linear_solver_names())

@@ -1,4 +1,6 @@
 #pragma once
+#include "sinew/core/near_null_space.hpp"
+
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
@@ -27,7 +29,8 @@ struct LinearSolverStats {
     int symbolic_analyses = 0;
     int numeric_factorizations = 0;
     int solves = 0;
-    int last_iterations = 0;  ///< iterative methods only
+    int last_iterations = 0;   ///< iterative methods only
+    long total_iterations = 0;  ///< iterative methods only: over all solves
 };
 
 /// Inertia of a symmetric matrix from an LDLᵀ: counts of positive, negative and
@@ -59,6 +62,17 @@ public:
     virtual Inertia inertia() const = 0;
     /// One line on the last failure, for messages.
     virtual std::string last_message() const = 0;
+    /// Iterative solvers: the relative residual ‖b − Ax‖/‖b‖ the next solves
+    /// stop at (positive; an inexact Newton step's forcing term η, say).
+    /// Direct solvers ignore it.
+    virtual void set_tolerance(double /*relative*/) {}
+    /// True for solvers whose preconditioner is built from a near null space
+    /// (the algebraic multigrids): a caller that knows one hands it to
+    /// set_near_null_space() before each factorize(). The others ignore it.
+    virtual bool uses_near_null_space() const { return false; }
+    /// The near null space of the matrices of the next factorize() calls
+    /// (vectors with as many rows as the matrix, or none).
+    virtual void set_near_null_space(const NearNullSpace& /*space*/) {}
     const LinearSolverStats& stats() const { return stats_; }
 
 protected:
@@ -72,10 +86,22 @@ protected:
 ///   "umfpack"      UMFPACK LU (general, the fallback)
 ///   "pcg-jacobi"   conjugate gradients with a Jacobi preconditioner (SPD)
 ///   "pcg-ichol"    conjugate gradients with an incomplete Cholesky preconditioner (SPD)
+///   "petsc-cg-gamg"   PETSc's conjugate gradients with its smoothed-aggregation AMG (SPD)
+///   "petsc-cg-hypre"  PETSc's conjugate gradients with hypre's BoomerAMG (SPD)
+/// The petsc-* names only when this build has PETSc (petsc_solver.hpp).
 std::vector<std::string> linear_solver_names();
 
-/// True for the iterative solvers of linear_solver_names() (pcg-*): their
-/// "factorization" is a preconditioner, not A's factors.
+/// linear_solver_names() and the names this build left out (petsc-* without
+/// PETSc): what an option may name, so that asking for a left-out solver
+/// gets check_linear_solver_built's message rather than "unknown".
+std::vector<std::string> known_linear_solver_names();
+
+/// InputError, saying how to get it, when `name` is a solver this build
+/// left out; nothing otherwise.
+void check_linear_solver_built(const std::string& name);
+
+/// True for the iterative solvers of linear_solver_names() (pcg-*, petsc-*):
+/// their "factorization" is a preconditioner, not A's factors.
 bool is_iterative_linear_solver(const std::string& name);
 
 /// The solver called `name`; InputError listing the valid names otherwise.

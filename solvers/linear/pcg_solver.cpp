@@ -30,6 +30,7 @@ public:
     }
 
     std::string name() const override { return name_; }
+    void set_tolerance(double relative) override { cg_.setTolerance(relative); }
 
     LinearStatus factorize(const SparseMatrix& A) override
     {
@@ -73,6 +74,7 @@ public:
         Eigen::VectorXd solution = cg_.solve(b);
         ++stats_.solves;
         stats_.last_iterations = static_cast<int>(cg_.iterations());
+        stats_.total_iterations += stats_.last_iterations;
         x = std::move(solution);
         if (!x.allFinite())
             return fail(LinearStatus::failed, "iterate is not finite (non-finite right-hand side or breakdown)");

@@ -41,6 +41,7 @@ Result NewtonRecorder::finish(Status status, const std::string& message, const E
     result_.statistics["linear_solve_s"] += factorization.solve_seconds();
     result_.statistics["symbolic_analyses"] += factorization.solver().stats().symbolic_analyses;
     result_.statistics["factorizations"] += factorization.factorizations();
+    result_.statistics["linear_iterations"] += static_cast<double>(factorization.solver().stats().total_iterations);
     return result_;
 }
 

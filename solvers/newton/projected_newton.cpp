@@ -27,7 +27,8 @@ public:
         : nlp_(nlp), options_(options), settings_(settings), recorder_(options, solver_name, nlp.name()),
           factorization_(make_linear_solver(settings.linear_solver)), reuse_(factorization_, settings.reuse),
           hessian_(nlp.hessian_pattern(), nlp.num_variables()), hessian_values_(nlp.hessian_pattern().nonzeros()),
-          projected_(nlp.supports(Projection::clamp)), bounds_(nlp)
+          projected_(nlp.supports(Projection::clamp)),
+          inexact_(settings.reuse.enabled || is_iterative_linear_solver(settings.linear_solver)), bounds_(nlp)
     {
         const int n = nlp.num_variables();
         gradient_.resize(n);
@@ -70,15 +71,21 @@ private:
     /// `direction`: by CG on the kept factorization to the forcing term η
     /// when reuse is on and CG gets there (FactorizationReuse); otherwise by
     /// factorizing the assembled H + shift·I, the shift raised until Cholesky
-    /// accepts it, and keeping that factorization.
+    /// accepts it, and keeping that factorization. An iterative linear solver
+    /// (reuse off) solves to η instead, its algebraic multigrid built with
+    /// the problem's near null space at x, the shift raised when its CG
+    /// meets non-positive curvature.
     bool solve_shifted(double& shift, VectorXd& direction, double diagonal_scale)
     {
         if (reuse_.solve(hessian_.matrix(), shift, rhs_, eta_, direction))
             return true;
-        if (!factorization_.factorize_shifted(hessian_, shift, diagonal_scale))
+        if (factorization_.solver().uses_near_null_space())
+            factorization_.set_near_null_space(nlp_.near_null_space(x_));
+        factorization_.set_tolerance(eta_);
+        if (!factorization_.solve_shifted(hessian_, shift, diagonal_scale, rhs_, direction))
             return false;
         reuse_.keep();
-        return factorization_.solve(rhs_, direction);
+        return true;
     }
     /// The (projected) gradient is at most target_ and, unless an outer
     /// loop set the target, at most the KKT tolerance solve() checks
@@ -115,6 +122,7 @@ private:
     VectorXd hessian_values_;
     const VectorXd no_multipliers_ = VectorXd(0);
     const bool projected_;
+    const bool inexact_;  ///< steps solved to the forcing term η: reuse on, or an iterative linear solver
     ActiveBounds bounds_;
 
     VectorXd x_, gradient_, rhs_, step_, alternative_, trial_, trial_gradient_;
@@ -141,13 +149,14 @@ Result ProjectedNewtonRun::run()
     target_ = settings_.gradient_target > 0.0 ? settings_.gradient_target : options_.tolerance * initial_gradient;
 
     for (int iteration = 1;; ++iteration) {
-        // With reuse on, the point that meets the target gets one finishing
-        // step solved to η = kFinishingForcing, then the solve ends: an
+        // With inexact steps (reuse on, or an iterative linear solver), the
+        // point that meets the target gets one finishing step solved to
+        // η = kFinishingForcing, then the solve ends: an
         // inexact step that just meets the target (η up to ‖∇f‖/‖∇f₀‖) leaves
         // x as far from the solution as the target allows, where an exact
         // Newton step would as a rule have overshot it by orders of magnitude.
         const bool at_target = reached();
-        if (at_target && (finishing_ || !settings_.reuse.enabled || iteration > options_.max_iterations))
+        if (at_target && (finishing_ || !inexact_ || iteration > options_.max_iterations))
             return finish(Status::converged, "gradient reduced by tol");
         finishing_ = at_target;
         if (iteration > options_.max_iterations)
@@ -316,7 +325,7 @@ public:
 
 std::vector<OptionDeclaration> newton_option_declarations()
 {
-    return {choice_option("linear_solver", "cholmod", "sparse solver of H d = -grad f", linear_solver_names()),
+    return {choice_option("linear_solver", "cholmod", "sparse solver of H d = -grad f", known_linear_solver_names()),
             real_option("armijo", "1e-4", "sufficient-decrease constant c1 of the Armijo test", 0.0, 0.5, true, true),
             integer_option("max_backtracks", "40", "halvings of the step before line_search_failed", 1, 1000),
             choice_option("reuse_factorization", "auto",
@@ -334,6 +343,7 @@ NewtonSettings newton_settings(const OptionValues& values)
 {
     NewtonSettings settings;
     settings.linear_solver = values.text("linear_solver");
+    check_linear_solver_built(settings.linear_solver);
     settings.line_search.armijo = values.real("armijo");
     settings.line_search.max_backtracks = values.integer("max_backtracks");
     const std::string& reuse = values.text("reuse_factorization");

@@ -17,6 +17,13 @@ bool rejected_by_cholesky(LinearStatus status)
     return status == LinearStatus::not_positive_definite || status == LinearStatus::singular;
 }
 
+/// The shift after `shift` in factorize_shifted's sequence; 0 past 1e20.
+double next_shift(double shift, double diagonal_scale)
+{
+    const double next = shift == 0.0 ? 1e-8 * diagonal_scale : 10.0 * shift;
+    return std::isfinite(next) && next <= 1e20 ? next : 0.0;
+}
+
 } // namespace
 
 RegularizedFactorization::RegularizedFactorization(std::unique_ptr<LinearSolver> solver) : solver_(std::move(solver))
@@ -40,8 +47,8 @@ bool RegularizedFactorization::factorize_shifted(PatternMatrix& A, double& shift
     LinearStatus status = factorize_timed(A.matrix());
     attempts_.push_back({shift, 0.0, status, solver_->inertia()});
     while (rejected_by_cholesky(status)) {
-        const double next = shift == 0.0 ? 1e-8 * diagonal_scale : 10.0 * shift;
-        if (!std::isfinite(next) || next > 1e20)
+        const double next = next_shift(shift, diagonal_scale);
+        if (next == 0.0)
             break;
         A.shift_diagonal(next - shift);
         shift = next;
@@ -52,6 +59,22 @@ bool RegularizedFactorization::factorize_shifted(PatternMatrix& A, double& shift
         return true;
     failure_ = "factorization failed: " + solver_->last_message();
     return false;
+}
+
+bool RegularizedFactorization::solve_shifted(PatternMatrix& A, double& shift, double diagonal_scale,
+                                             const Eigen::VectorXd& b, Eigen::VectorXd& x)
+{
+    for (;;) {
+        if (!factorize_shifted(A, shift, diagonal_scale))
+            return false;
+        if (solve(b, x))
+            return true;
+        const double next = next_shift(shift, diagonal_scale);
+        if (solve_status_ != LinearStatus::not_positive_definite || next == 0.0)
+            return false;
+        A.shift_diagonal(-shift);  // factorize_shifted adds the shift it is given to A
+        shift = next;
+    }
 }
 
 bool RegularizedFactorization::factorize_with_inertia(
@@ -105,6 +128,7 @@ bool RegularizedFactorization::solve(const Eigen::VectorXd& b, Eigen::VectorXd& 
     const auto start = Clock::now();
     const LinearStatus status = solver_->solve(b, x);
     solve_s_ += seconds_since(start);
+    solve_status_ = status;
     if (status == LinearStatus::ok && x.allFinite())
         return true;
     failure_ = "linear solve failed: " + solver_->last_message();

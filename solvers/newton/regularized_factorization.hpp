@@ -44,6 +44,12 @@ public:
     /// False (failure() says why) when no shift works.
     bool factorize_shifted(PatternMatrix& A, double& shift, double diagonal_scale);
 
+    /// factorize_shifted, then x = (A + shift·I)⁻¹ b. An iterative solver
+    /// finds A + shift·I not positive definite only in its solve; then the
+    /// shift is raised as in factorize_shifted and both are done again.
+    bool solve_shifted(PatternMatrix& A, double& shift, double diagonal_scale, const Eigen::VectorXd& b,
+                       Eigen::VectorXd& x);
+
     /// Symmetric indefinite KKT systems [H + δw I, Jᵀ; J, −δc I]: `assemble`
     /// fills K for (δw, δc); accepted when the inertia is (n, m, 0).
     /// Ipopt's schedule: δw = 0 first; then κw⁻·(last δw) or δ̄w⁰; then
@@ -64,6 +70,11 @@ public:
     double factorization_seconds() const { return factorization_s_; }
     double solve_seconds() const { return solve_s_; }
     const LinearSolver& solver() const { return *solver_; }
+    /// The near null space of the next matrices, for a solver that
+    /// uses_near_null_space() (an algebraic multigrid).
+    void set_near_null_space(const NearNullSpace& space) { solver_->set_near_null_space(space); }
+    /// The relative residual of the next solves, for an iterative solver.
+    void set_tolerance(double relative) { solver_->set_tolerance(relative); }
 
 private:
     LinearStatus factorize_timed(const SparseMatrix& A);
@@ -74,6 +85,7 @@ private:
     int factorizations_ = 0;
     double factorization_s_ = 0.0;
     double solve_s_ = 0.0;
+    LinearStatus solve_status_ = LinearStatus::ok;  ///< what the last solve() reported
 };
 
 } // namespace sinew

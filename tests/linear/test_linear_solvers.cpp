@@ -1,9 +1,11 @@
 #include "sinew/core/input_error.hpp"
 #include "sinew/solvers/linear/linear_solver.hpp"
+#include "sinew/solvers/linear/petsc_solver.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -18,7 +20,18 @@ using sinew::LinearStatus;
 using sinew::SparseMatrix;
 using Triplets = std::vector<Eigen::Triplet<double>>;
 
-const std::vector<std::string> symmetric_solver_names = {"cholmod", "cholmod-ldlt", "pcg-jacobi", "pcg-ichol"};
+/// The petsc-* solvers when this build has them.
+std::vector<std::string> with_petsc(std::vector<std::string> names)
+{
+    if (sinew::petsc_linear_solvers_built()) {
+        names.emplace_back("petsc-cg-gamg");
+        names.emplace_back("petsc-cg-hypre");
+    }
+    return names;
+}
+
+const std::vector<std::string> symmetric_solver_names = with_petsc({"cholmod", "cholmod-ldlt", "pcg-jacobi", "pcg-ichol"});
+const std::vector<std::string> iterative_solver_names = with_petsc({"pcg-jacobi", "pcg-ichol"});
 
 double uniform(std::mt19937& rng, double low, double high)
 {
@@ -121,7 +134,7 @@ Eigen::VectorXd factorize_and_solve(LinearSolver& solver, const SparseMatrix& A,
     return x;
 }
 
-bool is_iterative(const std::string& name) { return name.rfind("pcg", 0) == 0; }
+bool is_iterative(const std::string& name) { return sinew::is_iterative_linear_solver(name); }
 
 /// The quasi-definite KKT matrix [H Jᵀ; J −δI] with H a symmetric positive
 /// definite grid matrix (n = m³) and J a random num_constraints × n matrix of
@@ -163,7 +176,8 @@ SparseMatrix kkt_matrix(int m, int num_constraints, double delta, std::mt19937& 
 
 TEST_CASE("linear solver names, factory and status names", "[linear]")
 {
-    const std::vector<std::string> expected = {"cholmod", "cholmod-ldlt", "mumps-ldlt", "umfpack", "pcg-jacobi", "pcg-ichol"};
+    const std::vector<std::string> expected =
+        with_petsc({"cholmod", "cholmod-ldlt", "mumps-ldlt", "umfpack", "pcg-jacobi", "pcg-ichol"});
     REQUIRE(sinew::linear_solver_names() == expected);
     for (const std::string& name : expected)
         CHECK(sinew::make_linear_solver(name)->name() == name);
@@ -445,7 +459,7 @@ TEST_CASE("UMFPACK reports a singular matrix", "[linear]")
 
 TEST_CASE("PCG stops at its iteration limit with not_converged", "[linear]")
 {
-    const std::string name = GENERATE(as<std::string>{}, "pcg-jacobi", "pcg-ichol");
+    const std::string name = GENERATE(from_range(iterative_solver_names));
     CAPTURE(name);
     std::mt19937 rng(21);
     const SparseMatrix A = grid_matrix(10, true, rng);
@@ -463,7 +477,7 @@ TEST_CASE("PCG stops at its iteration limit with not_converged", "[linear]")
 
 TEST_CASE("PCG meets a looser requested tolerance", "[linear]")
 {
-    const std::string name = GENERATE(as<std::string>{}, "pcg-jacobi", "pcg-ichol");
+    const std::string name = GENERATE(from_range(iterative_solver_names));
     const double tolerance = 1e-6;
     CAPTURE(name, tolerance);
     std::mt19937 rng(22);
@@ -536,4 +550,46 @@ TEST_CASE("MUMPS LDLT reports a KKT matrix with dependent constraints as singula
     CHECK_THAT(solver->last_message(), Catch::Contains("singular"));
     Eigen::VectorXd x;
     CHECK(solver->solve(Eigen::VectorXd::Ones(5), x) == LinearStatus::failed);
+}
+
+TEST_CASE("an iterative solver takes a new tolerance for its next solves", "[linear]")
+{
+    const std::string name = GENERATE(from_range(iterative_solver_names));
+    CAPTURE(name);
+    std::mt19937 rng(23);
+    const SparseMatrix A = grid_matrix(12, true, rng);
+    const Eigen::VectorXd b = random_vector(static_cast<int>(A.rows()), rng);
+    const auto solver = sinew::make_linear_solver(name, 1e-10);
+    REQUIRE(solver->factorize(A) == LinearStatus::ok);
+    Eigen::VectorXd x;
+    solver->set_tolerance(1e-4);
+    REQUIRE(solver->solve(b, x) == LinearStatus::ok);
+    const double loose = relative_residual(A, x, b);
+    const long loose_iterations = solver->stats().last_iterations;
+    CHECK(loose <= 1e-4);
+    CHECK(loose > 1e-10);
+    solver->set_tolerance(1e-10);
+    REQUIRE(solver->solve(b, x) == LinearStatus::ok);
+    CHECK(relative_residual(A, x, b) <= 1e-10);
+    CHECK(solver->stats().last_iterations > loose_iterations);
+    CHECK(solver->stats().total_iterations == loose_iterations + solver->stats().last_iterations);
+}
+
+TEST_CASE("the petsc-* solvers: listed when built, a clear input error naming the package otherwise", "[linear]")
+{
+    const std::vector<std::string> names = sinew::linear_solver_names();
+    const bool listed = std::find(names.begin(), names.end(), "petsc-cg-gamg") != names.end();
+    CHECK(listed == sinew::petsc_linear_solvers_built());
+    const std::vector<std::string> known = sinew::known_linear_solver_names();
+    CHECK(std::find(known.begin(), known.end(), "petsc-cg-hypre") != known.end());
+    CHECK_NOTHROW(sinew::check_linear_solver_built("cholmod"));
+    if (sinew::petsc_linear_solvers_built()) {
+        CHECK(sinew::make_linear_solver("petsc-cg-gamg")->uses_near_null_space());
+        CHECK(sinew::make_linear_solver("petsc-cg-hypre")->uses_near_null_space());
+        CHECK_FALSE(sinew::make_linear_solver("cholmod")->uses_near_null_space());
+    } else {
+        CHECK_THROWS_WITH(sinew::make_linear_solver("petsc-cg-gamg"),
+                          Catch::Contains("built without") && Catch::Contains("libpetsc-real-dev"));
+        CHECK_THROWS_AS(sinew::check_linear_solver_built("petsc-cg-hypre"), sinew::InputError);
+    }
 }

@@ -65,13 +65,15 @@ inline RecordedEquilibrium read_recorded_equilibrium(const std::string& name)
     return recorded;
 }
 
-inline void check_recorded_equilibrium(const std::string& name)
+/// `request`: the default solve when empty; other settings (a linear solver)
+/// must reach the same equilibrium.
+inline void check_recorded_equilibrium(const std::string& name, const SceneRunRequest& request = {})
 {
     CAPTURE(name);
     const RecordedEquilibrium recorded = read_recorded_equilibrium(name);
     Scene scene = make_builtin_scene(name);
     const Eigen::VectorXd start = scene.problem->starting_point();
-    const SceneRunOutcome outcome = run_scene(scene, resolve_scene_run(scene, SceneRunRequest{}).settings);
+    const SceneRunOutcome outcome = run_scene(scene, resolve_scene_run(scene, request).settings);
     CAPTURE(outcome.last.message, outcome.last.iterations);
     REQUIRE(to_string(outcome.last.status) == recorded.status);
     const Eigen::VectorXd& x = outcome.last.x;

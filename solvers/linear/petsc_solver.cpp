@@ -1,0 +1,342 @@
+#include "sinew/solvers/linear/petsc_solver.hpp"
+
+#include "sinew/solvers/linear/analysed_pattern.hpp"
+#include "sinew/solvers/linear/matrix_input.hpp"
+
+#include <petscksp.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace sinew {
+
+bool petsc_linear_solvers_built() { return true; }
+
+namespace {
+
+/// A PETSc call that returned an error; caught at the LinearSolver interface.
+class PetscFailure : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+void check(PetscErrorCode code, const char* call)
+{
+    if (code == 0)
+        return;
+    const char* text = nullptr;
+    PetscErrorMessage(code, &text, nullptr);
+    throw PetscFailure(std::string(call) + " failed: " + (text != nullptr ? text : "PETSc error"));
+}
+
+/// Starts PETSc (and MPI, as a singleton process) once, on first use, and
+/// finalizes it at exit. PETSc's errors are returned, not printed, and its
+/// signal handler stays off (sinew's and the sanitizers' own handling stays).
+void start_petsc()
+{
+    static const bool started = [] {
+        PetscBool initialized = PETSC_FALSE;
+        check(PetscInitialized(&initialized), "PetscInitialized");
+        if (!initialized) {
+            check(PetscOptionsSetValue(nullptr, "-no_signal_handler", nullptr), "PetscOptionsSetValue");
+            check(PetscInitializeNoArguments(), "PetscInitialize");
+            std::atexit([] { PetscFinalize(); });
+        }
+        check(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr), "PetscPushErrorHandler");
+        return true;
+    }();
+    (void)started;
+}
+
+/// sinew's defaults for the multigrids, chosen on the 52k cantilever
+/// (docs/benchmarks.md, "PETSc's multigrids"), written to PETSc's options
+/// database unless the user's PETSC_OPTIONS already set the option:
+/// plain aggregation (no prolongator smoothing: a cheaper setup that CG's
+/// few extra iterations more than repay) with a small drop threshold for
+/// GAMG; for BoomerAMG the coarsening and interpolation hypre recommends
+/// for 3D problems (HMIS, extended+i interpolation of at most 4 entries per
+/// row, one level of aggressive coarsening).
+void set_default_options(PetscPreconditioner preconditioner)
+{
+    static const std::vector<std::pair<const char*, const char*>> gamg = {
+        {"-pc_gamg_agg_nsmooths", "0"}, {"-pc_gamg_threshold", "0.02"}};
+    static const std::vector<std::pair<const char*, const char*>> hypre = {
+        {"-pc_hypre_boomeramg_coarsen_type", "HMIS"},
+        {"-pc_hypre_boomeramg_interp_type", "ext+i"},
+        {"-pc_hypre_boomeramg_P_max", "4"},
+        {"-pc_hypre_boomeramg_agg_nl", "1"}};
+    for (const auto& [option, value] : preconditioner == PetscPreconditioner::gamg ? gamg : hypre) {
+        PetscBool set = PETSC_FALSE;
+        check(PetscOptionsHasName(nullptr, nullptr, option, &set), "PetscOptionsHasName");
+        if (!set)
+            check(PetscOptionsSetValue(nullptr, option, value), "PetscOptionsSetValue");
+    }
+}
+
+bool petsc_running()
+{
+    PetscBool finalized = PETSC_TRUE;
+    return PetscFinalized(&finalized) == 0 && !finalized;
+}
+
+/// KSPCG preconditioned by an algebraic multigrid. The matrix is PETSc's AIJ
+/// on one process; its rows are set one by one, as a distributed assembly
+/// would set each rank's rows.
+class PetscCgSolver final : public LinearSolver {
+public:
+    PetscCgSolver(PetscPreconditioner preconditioner, double tolerance, int max_iterations)
+        : preconditioner_(preconditioner), tolerance_(tolerance), max_iterations_(max_iterations)
+    {
+        start_petsc();
+    }
+    ~PetscCgSolver() override
+    {
+        if (!petsc_running())
+            return;
+        KSPDestroy(&ksp_);
+        VecDestroy(&x_);
+        VecDestroy(&b_);
+        MatDestroy(&A_);
+    }
+    PetscCgSolver(const PetscCgSolver&) = delete;
+    PetscCgSolver& operator=(const PetscCgSolver&) = delete;
+
+    std::string name() const override
+    {
+        return preconditioner_ == PetscPreconditioner::gamg ? "petsc-cg-gamg" : "petsc-cg-hypre";
+    }
+    void set_tolerance(double relative) override
+    {
+        tolerance_ = relative;
+        if (ksp_ != nullptr)
+            KSPSetTolerances(ksp_, tolerance_, 0.0, PETSC_DEFAULT, max_iterations_);
+    }
+    bool uses_near_null_space() const override { return true; }
+    void set_near_null_space(const NearNullSpace& space) override { near_null_space_ = space; }
+    /// An iterative method does not reveal the inertia: all counts are zero.
+    Inertia inertia() const override { return Inertia{}; }
+    std::string last_message() const override { return message_; }
+
+    LinearStatus factorize(const SparseMatrix& A) override
+    {
+        factorized_ = false;
+        const std::string unusable = describe_unusable_matrix(A, EntriesRead::lower_triangle);
+        if (!unusable.empty())
+            return fail(LinearStatus::failed, unusable);
+        const NearNullSpace& space = near_null_space_;
+        if (space.vectors.cols() > 0 && space.vectors.rows() != A.rows())
+            return fail(LinearStatus::failed, "near null space has " + std::to_string(space.vectors.rows()) +
+                                                  " rows, the matrix " + std::to_string(A.rows()));
+        SparseMatrix storage;
+        const SparseMatrix& lower = compressed(A, storage);
+        try {
+            // PETSc's AIJ holds both triangles of the symmetric matrix.
+            const SparseMatrix full = lower.selfadjointView<Eigen::Lower>();
+            const int block_size = usable_block_size(static_cast<int>(A.rows()));
+            if (!pattern_.matches(lower) || block_size != matrix_block_size_) {
+                create_matrix(full, block_size);
+                pattern_.remember(lower);
+                ++stats_.symbolic_analyses;
+            }
+            set_values(full);
+            attach_near_null_space();
+            set_up_preconditioner();
+        } catch (const PetscFailure& failure) {
+            return fail(LinearStatus::failed, failure.what());
+        }
+        ++stats_.numeric_factorizations;
+        factorized_ = true;
+        message_.clear();
+        return LinearStatus::ok;
+    }
+
+    LinearStatus solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override
+    {
+        if (!factorized_)
+            return fail(LinearStatus::failed, "solve called without a successful factorization");
+        if (b.size() != size_)
+            return fail(LinearStatus::failed, "right-hand side has size " + std::to_string(b.size()) +
+                                                  ", matrix has " + std::to_string(size_) + " rows");
+        if (!b.allFinite())
+            return fail(LinearStatus::failed, "right-hand side is not finite");
+        KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+        PetscInt iterations = 0;
+        PetscReal residual = 0.0;
+        try {
+            copy_into(b, b_);
+            check(KSPSolve(ksp_, b_, x_), "KSPSolve");
+            check(KSPGetConvergedReason(ksp_, &reason), "KSPGetConvergedReason");
+            check(KSPGetIterationNumber(ksp_, &iterations), "KSPGetIterationNumber");
+            check(KSPGetResidualNorm(ksp_, &residual), "KSPGetResidualNorm");
+            x.resize(size_);
+            copy_out(x_, x);
+        } catch (const PetscFailure& failure) {
+            return fail(LinearStatus::failed, failure.what());
+        }
+        ++stats_.solves;
+        stats_.last_iterations = static_cast<int>(iterations);
+        stats_.total_iterations += stats_.last_iterations;
+        if (!x.allFinite())
+            return fail(LinearStatus::failed, "iterate is not finite (non-finite right-hand side or breakdown)");
+        if (reason < 0)
+            return diverged(reason, iterations, residual / std::max(b.norm(), 1e-300));
+        message_.clear();
+        return LinearStatus::ok;
+    }
+
+private:
+    LinearStatus fail(LinearStatus status, const std::string& what)
+    {
+        message_ = name() + ": " + what;
+        return status;
+    }
+
+    LinearStatus diverged(KSPConvergedReason reason, PetscInt iterations, double relative_residual)
+    {
+        std::ostringstream what;
+        what << "not converged after " << iterations << " iterations (" << KSPConvergedReasons[reason]
+             << ", relative residual " << relative_residual << ", tolerance " << tolerance_ << ")";
+        if (reason == KSP_DIVERGED_ITS)
+            return fail(LinearStatus::not_converged, what.str());
+        if (reason == KSP_DIVERGED_INDEFINITE_MAT || reason == KSP_DIVERGED_INDEFINITE_PC)
+            return fail(LinearStatus::not_positive_definite, what.str());
+        return fail(LinearStatus::failed, what.str());
+    }
+
+    /// The near null space's block size when it divides n, else 1.
+    int usable_block_size(int n) const
+    {
+        const int block = near_null_space_.block_size;
+        return block > 1 && n % block == 0 ? block : 1;
+    }
+
+    /// A new AIJ matrix with the pattern of `full` preallocated row by row,
+    /// and the vectors that go with it.
+    void create_matrix(const SparseMatrix& full, int block_size)
+    {
+        MatDestroy(&A_);
+        VecDestroy(&x_);
+        VecDestroy(&b_);
+        size_ = static_cast<int>(full.rows());
+        std::vector<PetscInt> row_counts(full.cols());
+        for (Eigen::Index j = 0; j < full.cols(); ++j)  // column j of a symmetric matrix is row j
+            row_counts[j] = full.outerIndexPtr()[j + 1] - full.outerIndexPtr()[j];
+        check(MatCreate(PETSC_COMM_SELF, &A_), "MatCreate");
+        check(MatSetSizes(A_, size_, size_, size_, size_), "MatSetSizes");
+        check(MatSetType(A_, MATAIJ), "MatSetType");
+        check(MatSetBlockSize(A_, block_size), "MatSetBlockSize");
+        check(MatSeqAIJSetPreallocation(A_, 0, row_counts.data()), "MatSeqAIJSetPreallocation");
+        check(MatSetOption(A_, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE), "MatSetOption");
+        check(MatCreateVecs(A_, &x_, &b_), "MatCreateVecs");
+        matrix_block_size_ = block_size;
+    }
+
+    void set_values(const SparseMatrix& full)
+    {
+        for (Eigen::Index j = 0; j < full.cols(); ++j) {
+            const PetscInt row = static_cast<PetscInt>(j);
+            const int start = full.outerIndexPtr()[j];
+            const PetscInt count = full.outerIndexPtr()[j + 1] - start;
+            check(MatSetValues(A_, 1, &row, count, full.innerIndexPtr() + start, full.valuePtr() + start,
+                               INSERT_VALUES),
+                  "MatSetValues");
+        }
+        check(MatAssemblyBegin(A_, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+        check(MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+    }
+
+    /// The near null space's vectors as the matrix's MatNullSpace (they are
+    /// orthonormal, as PETSc asks).
+    void attach_near_null_space()
+    {
+        const Eigen::MatrixXd& vectors = near_null_space_.vectors;
+        if (vectors.cols() == 0)
+            return;
+        std::vector<Vec> columns(vectors.cols(), nullptr);
+        for (Eigen::Index k = 0; k < vectors.cols(); ++k) {
+            check(VecDuplicate(x_, &columns[k]), "VecDuplicate");
+            copy_into(vectors.col(k), columns[k]);
+        }
+        MatNullSpace space = nullptr;
+        check(MatNullSpaceCreate(PETSC_COMM_SELF, PETSC_FALSE, static_cast<PetscInt>(columns.size()),
+                                 columns.data(), &space),
+              "MatNullSpaceCreate");
+        const PetscErrorCode attached = MatSetNearNullSpace(A_, space);
+        MatNullSpaceDestroy(&space);
+        for (Vec& column : columns)
+            VecDestroy(&column);
+        check(attached, "MatSetNearNullSpace");
+    }
+
+    /// The KSP, made once: CG on the true residual, the multigrid with
+    /// sinew's defaults, then PETSc's options database (PETSC_OPTIONS) over
+    /// these choices. Then the multigrid's setup for the current matrix.
+    void set_up_preconditioner()
+    {
+        if (ksp_ == nullptr) {
+            check(KSPCreate(PETSC_COMM_SELF, &ksp_), "KSPCreate");
+            check(KSPSetType(ksp_, KSPCG), "KSPSetType");
+            check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");  // ‖b − Ax‖ ≤ tol·‖b‖
+            check(KSPSetTolerances(ksp_, tolerance_, 0.0, PETSC_DEFAULT, max_iterations_), "KSPSetTolerances");
+            PC pc = nullptr;
+            check(KSPGetPC(ksp_, &pc), "KSPGetPC");
+            if (preconditioner_ == PetscPreconditioner::gamg) {
+                check(PCSetType(pc, PCGAMG), "PCSetType");
+                // Each Newton matrix gets its own prolongators: kept from an
+                // earlier matrix (an indefinite exact Hessian, say), they gave
+                // an indefinite preconditioner on the next one.
+                check(PCGAMGSetReuseInterpolation(pc, PETSC_FALSE), "PCGAMGSetReuseInterpolation");
+            } else {
+                check(PCSetType(pc, PCHYPRE), "PCSetType");
+                check(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
+            }
+            set_default_options(preconditioner_);
+            check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
+        }
+        check(KSPSetOperators(ksp_, A_, A_), "KSPSetOperators");
+        check(KSPSetUp(ksp_), "KSPSetUp");
+    }
+
+    static void copy_into(const Eigen::Ref<const Eigen::VectorXd>& from, Vec to)
+    {
+        PetscScalar* values = nullptr;
+        check(VecGetArray(to, &values), "VecGetArray");
+        std::copy(from.data(), from.data() + from.size(), values);
+        check(VecRestoreArray(to, &values), "VecRestoreArray");
+    }
+
+    static void copy_out(Vec from, Eigen::VectorXd& to)
+    {
+        const PetscScalar* values = nullptr;
+        check(VecGetArrayRead(from, &values), "VecGetArrayRead");
+        std::copy(values, values + to.size(), to.data());
+        check(VecRestoreArrayRead(from, &values), "VecRestoreArrayRead");
+    }
+
+    const PetscPreconditioner preconditioner_;
+    double tolerance_;
+    const int max_iterations_;
+    NearNullSpace near_null_space_;
+    Mat A_ = nullptr;
+    Vec x_ = nullptr, b_ = nullptr;
+    KSP ksp_ = nullptr;
+    int size_ = 0;
+    int matrix_block_size_ = 1;
+    AnalysedPattern pattern_;
+    bool factorized_ = false;
+    std::string message_;
+};
+
+} // namespace
+
+std::unique_ptr<LinearSolver> make_petsc_cg_solver(PetscPreconditioner preconditioner, double tolerance,
+                                                   int max_iterations)
+{
+    return std::make_unique<PetscCgSolver>(preconditioner, tolerance, max_iterations);
+}
+
+} // namespace sinew
