@@ -202,7 +202,12 @@ private:
              << ", relative residual " << relative_residual << ", tolerance " << tolerance_ << ")";
         if (reason == KSP_DIVERGED_ITS)
             return fail(LinearStatus::not_converged, what.str());
-        if (reason == KSP_DIVERGED_INDEFINITE_MAT || reason == KSP_DIVERGED_INDEFINITE_PC)
+        // Non-positive curvature, an indefinite preconditioner, a breakdown
+        // of the recurrence or a residual that grows past PETSc's divergence
+        // tolerance: in CG each says the matrix or its multigrid is not
+        // positive definite, which a shift of the matrix cures.
+        if (reason == KSP_DIVERGED_INDEFINITE_MAT || reason == KSP_DIVERGED_INDEFINITE_PC ||
+            reason == KSP_DIVERGED_BREAKDOWN || reason == KSP_DIVERGED_DTOL)
             return fail(LinearStatus::not_positive_definite, what.str());
         return fail(LinearStatus::failed, what.str());
     }
