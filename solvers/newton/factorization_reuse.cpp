@@ -15,6 +15,7 @@ FactorizationReuse::FactorizationReuse(RegularizedFactorization& factorization, 
 
 bool FactorizationReuse::solve(const SparseMatrix& lower, double shift, const VectorXd& b, double eta, VectorXd& d)
 {
+    found_indefinite_ = false;
     if (!kept_)
         return false;
     const auto start = std::chrono::steady_clock::now();
@@ -32,6 +33,7 @@ bool FactorizationReuse::solve(const SparseMatrix& lower, double shift, const Ve
         return true;
     }
     ++refused_steps_;
+    found_indefinite_ = outcome.status == CgStatus::negative_curvature;
     return false;
 }
 

@@ -30,6 +30,11 @@ public:
 
     /// The factorization now holds A's factors: later steps may reuse them.
     void keep() { kept_ = settings_.enabled; }
+    /// The factorization no longer holds usable factors (a refused attempt).
+    void forget() { kept_ = false; }
+    /// The last solve() was refused because CG met non-positive curvature:
+    /// A + shift·I is not positive definite, so factorizing it would fail too.
+    bool found_indefinite() const { return found_indefinite_; }
 
     int cg_iterations() const { return cg_iterations_; }
     int reused_steps() const { return reused_steps_; }
@@ -40,6 +45,7 @@ private:
     RegularizedFactorization& factorization_;
     ReuseSettings settings_;
     bool kept_ = false;
+    bool found_indefinite_ = false;
     int cg_iterations_ = 0;
     int reused_steps_ = 0;
     int refused_steps_ = 0;

@@ -34,7 +34,6 @@ public:
         gradient_.resize(n);
         rhs_.resize(n);
         step_.resize(n);
-        alternative_.resize(n);
         trial_.resize(n);
         trial_gradient_.resize(n);
         recorder_.add_statistic("projected_iterations", 0.0);
@@ -79,13 +78,36 @@ private:
     {
         if (reuse_.solve(hessian_.matrix(), shift, rhs_, eta_, direction))
             return true;
-        if (factorization_.solver().uses_near_null_space())
-            factorization_.set_near_null_space(nlp_.near_null_space(x_));
-        factorization_.set_tolerance(eta_);
+        prepare_linear_solver();
         if (!factorization_.solve_shifted(hessian_, shift, diagonal_scale, rhs_, direction))
             return false;
         reuse_.keep();
         return true;
+    }
+    /// solve_shifted with `shift` tried once, not raised: `indefinite` when
+    /// CG on the kept factorization, the Cholesky of H + shift·I or an
+    /// iterative solver's CG finds H + shift·I not positive definite.
+    ShiftedSolve attempt_shifted(double shift, VectorXd& direction)
+    {
+        if (reuse_.solve(hessian_.matrix(), shift, rhs_, eta_, direction))
+            return ShiftedSolve::solved;
+        if (reuse_.found_indefinite())
+            return ShiftedSolve::indefinite;
+        prepare_linear_solver();
+        const ShiftedSolve outcome = factorization_.attempt_shifted(hessian_, shift, rhs_, direction);
+        if (outcome == ShiftedSolve::solved)
+            reuse_.keep();
+        else
+            reuse_.forget();
+        return outcome;
+    }
+    /// An algebraic multigrid gets the near null space at x; an iterative
+    /// solver the forcing term η as its relative residual.
+    void prepare_linear_solver()
+    {
+        if (factorization_.solver().uses_near_null_space())
+            factorization_.set_near_null_space(nlp_.near_null_space(x_));
+        factorization_.set_tolerance(eta_);
     }
     /// The (projected) gradient is at most target_ and, unless an outer
     /// loop set the target, at most the KKT tolerance solve() checks
@@ -98,8 +120,9 @@ private:
                          norm <= options_.kkt_tolerance * std::max(1.0, gradient_.cwiseAbs().maxCoeff());
         return norm <= target_ && kkt;
     }
-    bool newton_step(bool exact);
-    void choose_between_exact_and_projected();
+    bool newton_step(bool& exact);
+    ShiftedSolve exact_step();
+    bool projected_step();
     /// The line search along step_ and the update of x and the policy; a
     /// Result when the solve ends here.
     std::optional<Result> line_search_and_update(int iteration, bool exact);
@@ -125,14 +148,11 @@ private:
     const bool inexact_;  ///< steps solved to the forcing term η: reuse on, or an iterative linear solver
     ActiveBounds bounds_;
 
-    VectorXd x_, gradient_, rhs_, step_, alternative_, trial_, trial_gradient_;
+    VectorXd x_, gradient_, rhs_, step_, trial_, trial_gradient_;
     double f_ = 0.0;
     double diagonal_scale_ = 1.0;
     bool trust_exact_ = false;     ///< the last step's ρ ≥ ½
-    bool near_solution_ = false;   ///< the last step's predicted decrease was below round-off of f
     double kept_shift_ = 0.0;      ///< the shift the exact Hessian needed last time
-    double f_full_step_ = kInfinity;  ///< f at the full step, when already known
-    bool full_step_known_ = false;
 };
 
 Result ProjectedNewtonRun::run()
@@ -169,7 +189,7 @@ Result ProjectedNewtonRun::run()
         // alone stiffens H where element terms of opposite sign cancel in the
         // sum, and then converges only linearly; the exact Hessian alone
         // overshoots far from the solution (docs/solvers.md, "Projected Newton").
-        const bool exact = !projected_ || trust_exact_;
+        bool exact = !projected_ || trust_exact_;
         eta_ = finishing_ ? kFinishingForcing : forcing_.next(bounds_.projected_gradient_norm(x_, gradient_));
         if (!newton_step(exact))
             return finish(Status::numerical_error, factorization_.failure());
@@ -178,57 +198,57 @@ Result ProjectedNewtonRun::run()
     }
 }
 
-bool ProjectedNewtonRun::newton_step(bool exact)
+bool ProjectedNewtonRun::newton_step(bool& exact)
 {
     bounds_.update(x_, gradient_);
     rhs_ = -gradient_;
     for (size_t i = 0; bounds_.any() && i < bounds_.fixed().size(); ++i)
         if (bounds_.fixed()[i])
             rhs_[static_cast<Eigen::Index>(i)] = 0.0;
-    assemble_hessian(exact ? Projection::none : Projection::clamp);
-    diagonal_scale_ = std::max(1.0, hessian_.matrix().diagonal().cwiseAbs().maxCoeff());
-    if (!exact)
-        recorder_.add_statistic("projected_iterations", 1.0);
-    double shift = exact ? kept_shift_ : 0.0;
-    full_step_known_ = false;
-    if (!solve_shifted(shift, step_, diagonal_scale_))
+    if (exact) {
+        const ShiftedSolve outcome = exact_step();
+        if (outcome == ShiftedSolve::failed)
+            return false;
+        exact = outcome == ShiftedSolve::solved;
+    }
+    if (!exact && !projected_step())
         return false;
-    if (exact)
-        kept_shift_ = shift;
-    if (exact && projected_ && shift > 0.0 && near_solution_)
-        choose_between_exact_and_projected();
     if (!(gradient_.dot(step_) < 0.0))
         step_ = rhs_;  // not a descent direction: steepest descent
     return true;
 }
 
-// Near the solution (the last predicted decrease below round-off of f) an
-// exact H that needs a shift is indefinite at what should be a minimum: e.g. a
-// membrane in compression at an in-plane equilibrium, whose out-of-plane
-// stiffness is negative while ∇f has no out-of-plane part. The shifted step
-// then converges only linearly, at the rate shift/(λ + shift) of H's small
-// positive eigenvalues λ (the codim sheet, docs/solvers.md). The projected H's
-// step does not see the negative directions; of the two full steps, the one
-// with the lower f is taken.
-void ProjectedNewtonRun::choose_between_exact_and_projected()
+// The step on the exact H + σI, σ = kept_shift_. A problem with a
+// projection tries that σ once: when H + σI is indefinite, σ is raised for
+// the next exact iteration (×10, as in the shift loop) and this one takes
+// the projected step, one factorization where raising σ until Cholesky
+// accepts it costs one per σ tried (three per exact iteration on the twisted
+// 206k cantilever, docs/benchmarks.md). Without a projection, σ is raised
+// until H + σI is positive definite.
+ShiftedSolve ProjectedNewtonRun::exact_step()
+{
+    assemble_hessian(Projection::none);
+    diagonal_scale_ = std::max(1.0, hessian_.matrix().diagonal().cwiseAbs().maxCoeff());
+    double shift = kept_shift_;
+    if (projected_) {
+        const ShiftedSolve outcome = attempt_shifted(shift, step_);
+        if (outcome == ShiftedSolve::indefinite)
+            kept_shift_ = next_shift(kept_shift_, diagonal_scale_);
+        return outcome;
+    }
+    if (!solve_shifted(shift, step_, diagonal_scale_))
+        return ShiftedSolve::failed;
+    kept_shift_ = shift;
+    return ShiftedSolve::solved;
+}
+
+bool ProjectedNewtonRun::projected_step()
 {
     assemble_hessian(Projection::clamp);
-    double projected_shift = 0.0;
-    if (!solve_shifted(projected_shift, alternative_, diagonal_scale_))
-        return;
-    trial_ = x_ + step_;
-    bounds_.project(trial_);
-    const double f_exact = nlp_.objective(trial_);
-    trial_ = x_ + alternative_;
-    bounds_.project(trial_);
-    const double f_projected = nlp_.objective(trial_);
-    recorder_.count_evaluation(2);
-    full_step_known_ = true;
-    f_full_step_ = f_exact;
-    if (std::isfinite(f_projected) && !(f_exact <= f_projected)) {
-        step_.swap(alternative_);
-        f_full_step_ = f_projected;
-    }
+    diagonal_scale_ = std::max(1.0, hessian_.matrix().diagonal().cwiseAbs().maxCoeff());
+    recorder_.add_statistic("projected_iterations", 1.0);
+    double shift = 0.0;
+    return solve_shifted(shift, step_, diagonal_scale_);
 }
 
 std::optional<Result> ProjectedNewtonRun::line_search_and_update(int iteration, bool exact)
@@ -237,8 +257,6 @@ std::optional<Result> ProjectedNewtonRun::line_search_and_update(int iteration, 
     auto merit = [&](double alpha) {
         trial_ = x_ + alpha * step_;
         bounds_.project(trial_);
-        if (alpha == 1.0 && full_step_known_)
-            return f_full_step_;
         recorder_.count_evaluation();
         return nlp_.objective(trial_);
     };
@@ -272,7 +290,6 @@ std::optional<Result> ProjectedNewtonRun::line_search_and_update(int iteration, 
                        : std::isfinite(search.full_step) ? (f_ - search.full_step) / predicted
                                                          : -kInfinity;
     trust_exact_ = rho >= 0.5;
-    near_solution_ = !measurable;
     if (!measurable)
         kept_shift_ = 0.0;  // near the solution: exact Newton, quadratic convergence
     else if (exact && rho < 0.25)

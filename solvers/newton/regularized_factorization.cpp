@@ -17,14 +17,13 @@ bool rejected_by_cholesky(LinearStatus status)
     return status == LinearStatus::not_positive_definite || status == LinearStatus::singular;
 }
 
-/// The shift after `shift` in factorize_shifted's sequence; 0 past 1e20.
+} // namespace
+
 double next_shift(double shift, double diagonal_scale)
 {
     const double next = shift == 0.0 ? 1e-8 * diagonal_scale : 10.0 * shift;
     return std::isfinite(next) && next <= 1e20 ? next : 0.0;
 }
-
-} // namespace
 
 RegularizedFactorization::RegularizedFactorization(std::unique_ptr<LinearSolver> solver) : solver_(std::move(solver))
 {
@@ -39,40 +38,38 @@ LinearStatus RegularizedFactorization::factorize_timed(const SparseMatrix& A)
     return status;
 }
 
-bool RegularizedFactorization::factorize_shifted(PatternMatrix& A, double& shift, double diagonal_scale)
+ShiftedSolve RegularizedFactorization::attempt_shifted(PatternMatrix& A, double shift, const Eigen::VectorXd& b,
+                                                      Eigen::VectorXd& x)
 {
     attempts_.clear();
     if (shift > 0.0)
         A.shift_diagonal(shift);
-    LinearStatus status = factorize_timed(A.matrix());
+    const LinearStatus status = factorize_timed(A.matrix());
     attempts_.push_back({shift, 0.0, status, solver_->inertia()});
-    while (rejected_by_cholesky(status)) {
-        const double next = next_shift(shift, diagonal_scale);
-        if (next == 0.0)
-            break;
-        A.shift_diagonal(next - shift);
-        shift = next;
-        status = factorize_timed(A.matrix());
-        attempts_.push_back({shift, 0.0, status, solver_->inertia()});
+    if (rejected_by_cholesky(status)) {
+        failure_ = "factorization failed: " + solver_->last_message();
+        return ShiftedSolve::indefinite;
     }
-    if (status == LinearStatus::ok)
-        return true;
-    failure_ = "factorization failed: " + solver_->last_message();
-    return false;
+    if (status != LinearStatus::ok) {
+        failure_ = "factorization failed: " + solver_->last_message();
+        return ShiftedSolve::failed;
+    }
+    if (solve(b, x))
+        return ShiftedSolve::solved;
+    return solve_status_ == LinearStatus::not_positive_definite ? ShiftedSolve::indefinite : ShiftedSolve::failed;
 }
 
 bool RegularizedFactorization::solve_shifted(PatternMatrix& A, double& shift, double diagonal_scale,
                                              const Eigen::VectorXd& b, Eigen::VectorXd& x)
 {
     for (;;) {
-        if (!factorize_shifted(A, shift, diagonal_scale))
-            return false;
-        if (solve(b, x))
-            return true;
+        const ShiftedSolve outcome = attempt_shifted(A, shift, b, x);
+        if (outcome != ShiftedSolve::indefinite)
+            return outcome == ShiftedSolve::solved;
         const double next = next_shift(shift, diagonal_scale);
-        if (solve_status_ != LinearStatus::not_positive_definite || next == 0.0)
+        if (next == 0.0)
             return false;
-        A.shift_diagonal(-shift);  // factorize_shifted adds the shift it is given to A
+        A.shift_diagonal(-shift);  // attempt_shifted adds the shift it is given to A
         shift = next;
     }
 }

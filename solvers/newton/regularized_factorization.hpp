@@ -22,6 +22,13 @@ struct InertiaCorrection {
     double last_delta_w = 0.0;      ///< δw of the last successful factorization
 };
 
+/// The shift after `shift` in RegularizedFactorization::solve_shifted's
+/// sequence: 1e-8·diagonal_scale after 0, then ten times the last; 0 past 1e20.
+double next_shift(double shift, double diagonal_scale);
+
+/// How one try at an SPD solve ended.
+enum class ShiftedSolve { solved, indefinite, failed };
+
 /// One factorization attempt: the regularization tried and what it gave.
 struct FactorizationAttempt {
     double delta_w = 0.0;
@@ -37,16 +44,17 @@ class RegularizedFactorization {
 public:
     explicit RegularizedFactorization(std::unique_ptr<LinearSolver> solver);
 
-    /// SPD systems: factors A + shift·I. `shift` comes in as the first shift
-    /// to try (0: none) and goes out as the one that worked; a matrix the
-    /// Cholesky rejects (indefinite, or singular by round-off) gets
-    /// 1e-8·diagonal_scale, then ten times more each time, up to 1e20.
-    /// False (failure() says why) when no shift works.
-    bool factorize_shifted(PatternMatrix& A, double& shift, double diagonal_scale);
+    /// SPD systems, one try: factors A + shift·I (the shift is added to A)
+    /// and solves x = (A + shift·I)⁻¹ b. `indefinite` when the Cholesky
+    /// rejects the matrix (indefinite, or singular by round-off) or an
+    /// iterative solver's CG meets non-positive curvature; `failed` for any
+    /// other failure (failure() says why).
+    ShiftedSolve attempt_shifted(PatternMatrix& A, double shift, const Eigen::VectorXd& b, Eigen::VectorXd& x);
 
-    /// factorize_shifted, then x = (A + shift·I)⁻¹ b. An iterative solver
-    /// finds A + shift·I not positive definite only in its solve; then the
-    /// shift is raised as in factorize_shifted and both are done again.
+    /// attempt_shifted from `shift` (0: none), raising the shift while the
+    /// matrix is found indefinite: 1e-8·diagonal_scale first, then ten times
+    /// more each time, up to 1e20. `shift` goes out as the one that worked.
+    /// False (failure() says why) when no shift works.
     bool solve_shifted(PatternMatrix& A, double& shift, double diagonal_scale, const Eigen::VectorXd& b,
                        Eigen::VectorXd& x);
 
