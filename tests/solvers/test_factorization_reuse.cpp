@@ -1,10 +1,13 @@
 // Inexact Newton on a reused factorization (issue 14): preconditioned CG's
-// three ways to stop, the Eisenstat-Walker forcing terms, and projected
+// three ways to stop, why a reuse was refused, the Eisenstat-Walker forcing terms, and projected
 // Newton with reuse on against reuse off.
 #include "sinew/core/input_error.hpp"
 #include "sinew/problems/builtin_problems.hpp"
+#include "sinew/solvers/linear/linear_solver.hpp"
+#include "sinew/solvers/newton/factorization_reuse.hpp"
 #include "sinew/solvers/newton/forcing_term.hpp"
 #include "sinew/solvers/newton/preconditioned_cg.hpp"
+#include "sinew/solvers/newton/regularized_factorization.hpp"
 #include "sinew/solvers/solver.hpp"
 
 #include <Eigen/Cholesky>
@@ -154,6 +157,49 @@ TEST_CASE("Eisenstat-Walker forcing terms: loose at first, safeguarded, O(gradie
     CHECK(forcing.next(0.03) == Approx(0.009));
     // 0.03 → 0.02: γ·(2/3)² = 0.4, capped by ‖g‖/‖g₀‖ = 0.02
     CHECK(forcing.next(0.02) == Approx(0.02));
+}
+
+TEST_CASE("a refused reuse says whether CG found the matrix indefinite or only ran out of iterations")
+{
+    const int n = 30;
+    SparsityPattern pattern;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j <= i; ++j)
+            pattern.add(i, j);
+    auto lower_values = [&](const MatrixXd& M) {
+        VectorXd values(pattern.nonzeros());
+        for (int k = 0; k < pattern.nonzeros(); ++k)
+            values[k] = M(pattern.rows[k], pattern.cols[k]);
+        return values;
+    };
+    PatternMatrix A(pattern, n);
+    A.fill(lower_values(MatrixXd::Identity(n, n)));
+    RegularizedFactorization factorization(make_linear_solver("cholmod"));
+    ReuseSettings settings;
+    settings.enabled = true;
+    settings.max_cg_iterations = 3;
+    FactorizationReuse reuse(factorization, settings);
+    const VectorXd b = random_vector(n, 5);
+    VectorXd d;
+    CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 0.1, d));  // nothing kept yet
+    CHECK_FALSE(reuse.found_indefinite());
+    double shift = 0.0;
+    REQUIRE(factorization.solve_shifted(A, shift, 1.0, b, d));
+    reuse.keep();
+    // Preconditioned by I: an SPD matrix with spread eigenvalues needs more than 3 iterations.
+    A.fill(lower_values(random_spd(n, 1e4, 6)));
+    CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
+    CHECK_FALSE(reuse.found_indefinite());
+    // An indefinite one: −I meets negative curvature in the first iteration.
+    A.fill(lower_values(-MatrixXd::Identity(n, n)));
+    CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
+    CHECK(reuse.found_indefinite());
+    // Shifted past its spectrum it is I again: one iteration.
+    CHECK(reuse.solve(A.matrix(), 2.0, b, 1e-8, d));
+    CHECK_FALSE(reuse.found_indefinite());
+    CHECK((d - b).norm() < 1e-10 * b.norm());
+    reuse.forget();
+    CHECK_FALSE(reuse.solve(A.matrix(), 2.0, b, 1e-8, d));
 }
 
 TEST_CASE("projected Newton reusing factorizations reaches the same minimum with fewer factorizations")

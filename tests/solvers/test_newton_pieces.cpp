@@ -147,6 +147,37 @@ TEST_CASE("line search: Armijo, back-off on non-finite values, round-off accepta
     CHECK(out.status == LineSearchStatus::failed);
 }
 
+TEST_CASE("a shifted SPD solve: one try reports indefinite, the shift loop raises the shift until Cholesky accepts",
+          "[newton-pieces]")
+{
+    // A = diag(4, −0.5): indefinite; A + σI is positive definite for σ > 0.5.
+    SparsityPattern pattern;
+    pattern.add(0, 0);
+    pattern.add(1, 1);
+    PatternMatrix A(pattern, 2);
+    const Eigen::Vector2d values(4.0, -0.5);
+    const Eigen::Vector2d b(1.0, 1.0);
+    Eigen::VectorXd x;
+    RegularizedFactorization factorization(make_linear_solver("cholmod"));
+    A.fill(values);
+    CHECK(factorization.attempt_shifted(A, 0.0, b, x) == ShiftedSolve::indefinite);
+    A.fill(values);
+    REQUIRE(factorization.attempt_shifted(A, 1.0, b, x) == ShiftedSolve::solved);
+    CHECK(x[0] == Approx(1.0 / 5.0));
+    CHECK(x[1] == Approx(1.0 / 0.5));
+    // The loop from σ = 0 with diagonal scale 4: 4e-8, 4e-7, …, 0.4 are
+    // rejected, 4 is the first accepted.
+    A.fill(values);
+    double shift = 0.0;
+    REQUIRE(factorization.solve_shifted(A, shift, 4.0, b, x));
+    CHECK(shift == Approx(4.0));
+    CHECK(factorization.attempts().size() == 1);
+    CHECK(factorization.factorizations() == 2 + 10);
+    CHECK(x[1] == Approx(1.0 / 3.5));
+    CHECK(next_shift(0.0, 4.0) == Approx(4e-8));
+    CHECK(next_shift(1e20, 1.0) == 0.0);
+}
+
 TEST_CASE("inertia correction regularizes an indefinite KKT matrix until it has n positive and m negative "
           "eigenvalues",
           "[newton-pieces]")
