@@ -9,7 +9,9 @@
 # Environment: SINEW (default build/apps/sinew of this checkout), PYTHON (default
 # /usr/bin/python3, the interpreter python3-dolfin installs into), CELLS
 # (default "12 19"), FENICS_ARGS (extra arguments for cantilever.py), THREADS
-# (default 2, for both codes), VARIANTS (default "straight twisted").
+# (default 2, for both codes), VARIANTS (default "straight twisted"),
+# LINEAR_SOLVERS (default "cholmod": sinew's linear_solver option; each one
+# listed is a sinew run and a row of the table, against the same FEniCS run).
 # Raw outputs (sinew's result JSON and iteration table, the FEniCS JSON line
 # and log) go to OUTDIR (default ./fenics-comparison-YYYYmmdd-HHMMSS).
 set -euo pipefail
@@ -23,6 +25,7 @@ FENICS_ARGS="${FENICS_ARGS:-}"
 # threads (MUMPS's dense blocks through PETSc; dolfin assembles serially).
 THREADS="${THREADS:-2}"
 VARIANTS="${VARIANTS:-straight twisted}"
+LINEAR_SOLVERS="${LINEAR_SOLVERS:-cholmod}"
 export OPENBLAS_NUM_THREADS="$THREADS" OMP_NUM_THREADS="$THREADS"
 out="${1:-fenics-comparison-$(date +%Y%m%d-%H%M%S)}"
 mkdir -p "$out"
@@ -41,13 +44,15 @@ for c in $CELLS; do
     case "$c" in 6) k=6k ;; 12) k=52k ;; 19) k=206k ;; *) echo "cells must be 6, 12 or 19" >&2; exit 2 ;; esac
     for variant in $VARIANTS; do
         if [ "$variant" = twisted ]; then scene="twisted-cantilever-$k"; flag=--twisted; else scene="cantilever-$k"; flag=; fi
-        echo "== $scene: sinew (load $(loadavg))" >&2
-        echo "$(loadavg)" > "$out/$scene.load-before-sinew"
-        status=0
-        "$SINEW" --threads "$THREADS" solve "$scene" --solver projected-newton --json "$out/$scene.sinew.json" \
-            > "$out/$scene.sinew.log" 2>&1 || status=$?
-        echo "$status" > "$out/$scene.sinew.status"
-        tail -n 1 "$out/$scene.sinew.log" >&2
+        for solver in $LINEAR_SOLVERS; do
+            echo "== $scene: sinew, $solver (load $(loadavg))" >&2
+            echo "$(loadavg)" > "$out/$scene.$solver.load-before-sinew"
+            status=0
+            "$SINEW" --threads "$THREADS" solve "$scene" --solver projected-newton --option "linear_solver=$solver" \
+                --json "$out/$scene.$solver.sinew.json" > "$out/$scene.$solver.sinew.log" 2>&1 || status=$?
+            echo "$status" > "$out/$scene.$solver.sinew.status"
+            tail -n 1 "$out/$scene.$solver.sinew.log" >&2
+        done
         echo "== $scene: FEniCS (load $(loadavg))" >&2
         echo "$(loadavg)" > "$out/$scene.load-before-fenics"
         status=0
@@ -60,9 +65,9 @@ for c in $CELLS; do
     done
 done
 
-"$PYTHON" - "$out" "$VARIANTS" $CELLS <<'EOF'
+"$PYTHON" - "$out" "$VARIANTS" "$LINEAR_SOLVERS" $CELLS <<'EOF'
 import json, os, sys
-out, variants, cells = sys.argv[1], sys.argv[2].split(), sys.argv[3:]
+out, variants, solvers, cells = sys.argv[1], sys.argv[2].split(), sys.argv[3].split(), sys.argv[4:]
 size = {"6": "6k", "12": "52k", "19": "206k"}
 def load(path):
     try:
@@ -82,32 +87,35 @@ def read(path):
             return f.read().strip()
     except OSError:
         return "?"
-print("| scene | tets | ours: iterations | ours: wall s | FEniCS: load steps | FEniCS: Newton iterations | "
+print("| scene | tets | ours: linear solver | ours: iterations | ours: wall s | FEniCS: load steps | FEniCS: Newton iterations | "
       "FEniCS: wall s | FEniCS: failed attempts s | ratio FEniCS/ours | energy ours | energy FEniCS | load avg before ours / FEniCS |")
-print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|")
+print("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|")
+def row(scene, solver, c):
+    ours = load(os.path.join(out, "%s.%s.sinew.json" % (scene, solver)))
+    fe = load(os.path.join(out, scene + ".fenics.json"))
+    o_it = "%d%s" % (ours["iterations"], "" if ours.get("converged") else " (not converged)") if ours else "failed"
+    o_t = "%.2f" % ours["time_s"] if ours else "-"
+    if fe and fe.get("load_steps"):
+        f_n, f_it, f_t = str(fe["load_steps"]), str(fe["newton_iterations"]), "%.2f" % fe["wall_s"]
+        f_fail = "%.2f" % fe["failed_attempts_s"]
+        ratio = "%.1f" % (fe["wall_s"] / ours["time_s"]) if ours else "-"
+        e_fe = "%.12g" % fe["energy"]
+    else:
+        f_n, f_it, f_t, ratio, e_fe = "failed", "-", "-", "-", "-"
+        f_fail = "%.2f" % fe["failed_attempts_s"] if fe else "-"
+    e_ours = "%.12g" % ours["objective"] if ours else "-"
+    tets = fe["tets"] if fe else 6 * 5 * int(c) ** 3
+    loads = "%s / %s" % (read(os.path.join(out, "%s.%s.load-before-sinew" % (scene, solver))),
+                         read(os.path.join(out, scene + ".load-before-fenics")))
+    return "| %s | %d | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+        scene, tets, solver, o_it, o_t, f_n, f_it, f_t, f_fail, ratio, e_ours, e_fe, loads)
 for c in cells:
     for variant in variants:
         scene = ("twisted-" if variant == "twisted" else "") + "cantilever-" + size[c]
-        ours = load(os.path.join(out, scene + ".sinew.json"))
-        fe = load(os.path.join(out, scene + ".fenics.json"))
-        o_it = "%d%s" % (ours["iterations"], "" if ours.get("converged") else " (not converged)") if ours else "failed"
-        o_t = "%.2f" % ours["time_s"] if ours else "-"
-        if fe and fe.get("load_steps"):
-            f_n, f_it, f_t = str(fe["load_steps"]), str(fe["newton_iterations"]), "%.2f" % fe["wall_s"]
-            f_fail = "%.2f" % fe["failed_attempts_s"]
-            ratio = "%.1f" % (fe["wall_s"] / ours["time_s"]) if ours else "-"
-            e_fe = "%.12g" % fe["energy"]
-        else:
-            f_n, f_it, f_t, ratio, e_fe = "failed", "-", "-", "-", "-"
-            f_fail = "%.2f" % fe["failed_attempts_s"] if fe else "-"
-        e_ours = "%.12g" % ours["objective"] if ours else "-"
-        tets = fe["tets"] if fe else 6 * 5 * int(c) ** 3
-        loads = "%s / %s" % (read(os.path.join(out, scene + ".load-before-sinew")),
-                             read(os.path.join(out, scene + ".load-before-fenics")))
-        print("| %s | %d | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |"
-              % (scene, tets, o_it, o_t, f_n, f_it, f_t, f_fail, ratio, e_ours, e_fe, loads))
+        for solver in solvers:
+            print(row(scene, solver, c))
 print()
-print("ours: `sinew solve SCENE --solver projected-newton`, wall = result time_s (the solver run; problem "
+print("ours: `sinew solve SCENE --solver projected-newton --option linear_solver=SOLVER`, wall = result time_s (the solver run; problem "
       "construction excluded). FEniCS: wall of the successful load-stepping run (assembly + MUMPS solves), "
       "mesh construction and form compilation excluded (JIT cache warmed first); failed attempts with fewer "
       "load steps timed separately. Raw outputs: %s" % out)

@@ -146,11 +146,10 @@ public:
 
     LinearStatus solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override
     {
-        if (!factorized_)
-            return fail(LinearStatus::failed, "solve called without a successful factorization");
-        if (b.size() != static_cast<Eigen::Index>(factor_->n))
-            return fail(LinearStatus::failed, "right-hand side has size " + std::to_string(b.size()) +
-                                                  ", matrix has " + std::to_string(factor_->n) + " rows");
+        const Eigen::Index rows = factor_ != nullptr ? static_cast<Eigen::Index>(factor_->n) : 0;
+        const std::string unusable = describe_unusable_solve(factorized_, b.size(), rows);
+        if (!unusable.empty())
+            return fail(LinearStatus::failed, unusable);
         cholmod_dense rhs = vector_view(b);
         cholmod_dense* solution = cholmod_solve(CHOLMOD_A, factor_, &rhs, &common_);
         ++stats_.solves;

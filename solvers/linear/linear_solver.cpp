@@ -49,11 +49,14 @@ std::vector<std::string> known_linear_solver_names()
     return names;
 }
 
-void check_linear_solver_built(const std::string& name)
+void check_linear_solver_usable(const std::string& name)
 {
-    if (name.rfind("petsc-", 0) == 0 && !petsc_linear_solvers_built())
+    if (name != "petsc-cg-gamg" && name != "petsc-cg-hypre")
+        return;
+    if (!petsc_linear_solvers_built())
         throw InputError("linear solver '" + name + "' needs PETSc, and this sinew was built without it: "
                          "bash scripts/setup.sh installs libpetsc-real-dev, then configure and build again");
+    check_petsc_options(name == "petsc-cg-gamg" ? PetscPreconditioner::gamg : PetscPreconditioner::hypre);
 }
 
 bool is_iterative_linear_solver(const std::string& name)
@@ -97,7 +100,7 @@ std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name, double
         return make_pcg_ichol_solver(tolerance, max_iterations);
     }
     if (name == "petsc-cg-gamg" || name == "petsc-cg-hypre") {
-        check_linear_solver_built(name);
+        check_linear_solver_usable(name);
         check_iteration_limits(name, tolerance, max_iterations);
         const auto preconditioner = name == "petsc-cg-gamg" ? PetscPreconditioner::gamg : PetscPreconditioner::hypre;
         return make_petsc_cg_solver(preconditioner, tolerance, max_iterations);

@@ -93,12 +93,13 @@ std::vector<std::string> linear_solver_names();
 
 /// linear_solver_names() and the names this build left out (petsc-* without
 /// PETSc): what an option may name, so that asking for a left-out solver
-/// gets check_linear_solver_built's message rather than "unknown".
+/// gets check_linear_solver_usable's message rather than "unknown".
 std::vector<std::string> known_linear_solver_names();
 
-/// InputError, saying how to get it, when `name` is a solver this build
-/// left out; nothing otherwise.
-void check_linear_solver_built(const std::string& name);
+/// InputError when `name` is a solver this build left out (saying how to
+/// get it), or a petsc-* solver whose options PETSc refuses
+/// (check_petsc_options); nothing otherwise.
+void check_linear_solver_usable(const std::string& name);
 
 /// True for the iterative solvers of linear_solver_names() (pcg-*, petsc-*):
 /// their "factorization" is a preconditioner, not A's factors.

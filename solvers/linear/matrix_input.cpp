@@ -16,6 +16,16 @@ std::string describe_unusable_matrix(const SparseMatrix& A, EntriesRead read)
     return {};
 }
 
+std::string describe_unusable_solve(bool factorized, Eigen::Index rhs_size, Eigen::Index rows)
+{
+    if (!factorized)
+        return "solve called without a successful factorization";
+    if (rhs_size != rows)
+        return "right-hand side has size " + std::to_string(rhs_size) + ", matrix has " + std::to_string(rows) +
+               " rows";
+    return "";
+}
+
 const SparseMatrix& compressed(const SparseMatrix& A, SparseMatrix& storage)
 {
     if (A.isCompressed())

@@ -17,6 +17,10 @@ enum class EntriesRead {
 /// symmetric solver.
 std::string describe_unusable_matrix(const SparseMatrix& A, EntriesRead read);
 
+/// Why solve(b) cannot be tried: no successful factorization, or b's size
+/// differs from the factorized matrix's `rows`; an empty string when it can.
+std::string describe_unusable_solve(bool factorized, Eigen::Index rhs_size, Eigen::Index rows);
+
 /// A itself when it is compressed; otherwise a compressed copy put in `storage`.
 /// Solvers read the raw column-pointer / row-index / value arrays, which are
 /// only contiguous in compressed form.

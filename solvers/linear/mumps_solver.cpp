@@ -72,11 +72,9 @@ public:
 
     LinearStatus solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override
     {
-        if (!factorized_)
-            return fail(LinearStatus::failed, "solve called without a successful factorization");
-        if (b.size() != mumps_.n)
-            return fail(LinearStatus::failed, "right-hand side has size " + std::to_string(b.size()) +
-                                                  ", matrix has " + std::to_string(mumps_.n) + " rows");
+        const std::string unusable = describe_unusable_solve(factorized_, b.size(), mumps_.n);
+        if (!unusable.empty())
+            return fail(LinearStatus::failed, unusable);
         rhs_ = b;
         mumps_.rhs = rhs_.data();
         mumps_.nrhs = 1;

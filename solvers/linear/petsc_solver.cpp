@@ -1,5 +1,6 @@
 #include "sinew/solvers/linear/petsc_solver.hpp"
 
+#include "sinew/core/input_error.hpp"
 #include "sinew/solvers/linear/analysed_pattern.hpp"
 #include "sinew/solvers/linear/matrix_input.hpp"
 
@@ -24,13 +25,37 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+/// The message PETSc gave with the error it raised last (its first
+/// report, where the error arose), recorded by record_error.
+std::string& last_petsc_error()
+{
+    static std::string message;
+    return message;
+}
+
+/// PETSc's error handler while sinew runs it: keeps the first report's
+/// message (later reports of the same error are its traceback) and returns
+/// the error code, printing nothing.
+PetscErrorCode record_error(MPI_Comm, int, const char* function, const char*, PetscErrorCode code,
+                            PetscErrorType type, const char* message, void*)
+{
+    if (type == PETSC_ERROR_INITIAL)
+        last_petsc_error() = std::string(message != nullptr ? message : "") + " (in " +
+                             (function != nullptr ? function : "PETSc") + ")";
+    return code;
+}
+
 void check(PetscErrorCode code, const char* call)
 {
     if (code == 0)
         return;
     const char* text = nullptr;
     PetscErrorMessage(code, &text, nullptr);
-    throw PetscFailure(std::string(call) + " failed: " + (text != nullptr ? text : "PETSc error"));
+    std::string what = std::string(call) + " failed: " + (text != nullptr ? text : "PETSc error");
+    if (!last_petsc_error().empty())
+        what += ": " + last_petsc_error();
+    last_petsc_error().clear();
+    throw PetscFailure(what);
 }
 
 /// Starts PETSc (and MPI, as a singleton process) once, on first use, and
@@ -46,7 +71,7 @@ void start_petsc()
             check(PetscInitializeNoArguments(), "PetscInitialize");
             std::atexit([] { PetscFinalize(); });
         }
-        check(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr), "PetscPushErrorHandler");
+        check(PetscPushErrorHandler(record_error, nullptr), "PetscPushErrorHandler");
         return true;
     }();
     (void)started;
@@ -77,6 +102,34 @@ void set_default_options(PetscPreconditioner preconditioner)
     }
 }
 
+/// CG on the true residual with the multigrid and sinew's defaults, then
+/// PETSc's options database (PETSC_OPTIONS) over these choices.
+void configure_cg(KSP ksp, PetscPreconditioner preconditioner, double tolerance, int max_iterations)
+{
+    check(KSPSetType(ksp, KSPCG), "KSPSetType");
+    check(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");  // ‖b − Ax‖ ≤ tol·‖b‖
+    check(KSPSetTolerances(ksp, tolerance, 0.0, PETSC_DEFAULT, max_iterations), "KSPSetTolerances");
+    PC pc = nullptr;
+    check(KSPGetPC(ksp, &pc), "KSPGetPC");
+    if (preconditioner == PetscPreconditioner::gamg) {
+        check(PCSetType(pc, PCGAMG), "PCSetType");
+        // Each Newton matrix gets its own prolongators: kept from an earlier
+        // matrix (an indefinite exact Hessian, say), they gave an indefinite
+        // preconditioner on the next one.
+        check(PCGAMGSetReuseInterpolation(pc, PETSC_FALSE), "PCGAMGSetReuseInterpolation");
+    } else {
+        check(PCSetType(pc, PCHYPRE), "PCSetType");
+        check(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
+    }
+    set_default_options(preconditioner);
+    check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
+}
+
+const char* solver_name(PetscPreconditioner preconditioner)
+{
+    return preconditioner == PetscPreconditioner::gamg ? "petsc-cg-gamg" : "petsc-cg-hypre";
+}
+
 bool petsc_running()
 {
     PetscBool finalized = PETSC_TRUE;
@@ -105,10 +158,7 @@ public:
     PetscCgSolver(const PetscCgSolver&) = delete;
     PetscCgSolver& operator=(const PetscCgSolver&) = delete;
 
-    std::string name() const override
-    {
-        return preconditioner_ == PetscPreconditioner::gamg ? "petsc-cg-gamg" : "petsc-cg-hypre";
-    }
+    std::string name() const override { return solver_name(preconditioner_); }
     void set_tolerance(double relative) override
     {
         tolerance_ = relative;
@@ -156,11 +206,9 @@ public:
 
     LinearStatus solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override
     {
-        if (!factorized_)
-            return fail(LinearStatus::failed, "solve called without a successful factorization");
-        if (b.size() != size_)
-            return fail(LinearStatus::failed, "right-hand side has size " + std::to_string(b.size()) +
-                                                  ", matrix has " + std::to_string(size_) + " rows");
+        const std::string unusable = describe_unusable_solve(factorized_, b.size(), size_);
+        if (!unusable.empty())
+            return fail(LinearStatus::failed, unusable);
         if (!b.allFinite())
             return fail(LinearStatus::failed, "right-hand side is not finite");
         KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
@@ -277,30 +325,13 @@ private:
         check(attached, "MatSetNearNullSpace");
     }
 
-    /// The KSP, made once: CG on the true residual, the multigrid with
-    /// sinew's defaults, then PETSc's options database (PETSC_OPTIONS) over
-    /// these choices. Then the multigrid's setup for the current matrix.
+    /// The KSP, made once (configure_cg), then the multigrid's setup for
+    /// the current matrix.
     void set_up_preconditioner()
     {
         if (ksp_ == nullptr) {
             check(KSPCreate(PETSC_COMM_SELF, &ksp_), "KSPCreate");
-            check(KSPSetType(ksp_, KSPCG), "KSPSetType");
-            check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");  // ‖b − Ax‖ ≤ tol·‖b‖
-            check(KSPSetTolerances(ksp_, tolerance_, 0.0, PETSC_DEFAULT, max_iterations_), "KSPSetTolerances");
-            PC pc = nullptr;
-            check(KSPGetPC(ksp_, &pc), "KSPGetPC");
-            if (preconditioner_ == PetscPreconditioner::gamg) {
-                check(PCSetType(pc, PCGAMG), "PCSetType");
-                // Each Newton matrix gets its own prolongators: kept from an
-                // earlier matrix (an indefinite exact Hessian, say), they gave
-                // an indefinite preconditioner on the next one.
-                check(PCGAMGSetReuseInterpolation(pc, PETSC_FALSE), "PCGAMGSetReuseInterpolation");
-            } else {
-                check(PCSetType(pc, PCHYPRE), "PCSetType");
-                check(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
-            }
-            set_default_options(preconditioner_);
-            check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
+            configure_cg(ksp_, preconditioner_, tolerance_, max_iterations_);
         }
         check(KSPSetOperators(ksp_, A_, A_), "KSPSetOperators");
         check(KSPSetUp(ksp_), "KSPSetUp");
@@ -337,6 +368,22 @@ private:
 };
 
 } // namespace
+
+void check_petsc_options(PetscPreconditioner preconditioner)
+{
+    KSP ksp = nullptr;
+    try {
+        start_petsc();
+        check(KSPCreate(PETSC_COMM_SELF, &ksp), "KSPCreate");
+        configure_cg(ksp, preconditioner, 1e-8, 100);
+        KSPDestroy(&ksp);
+    } catch (const PetscFailure& failure) {
+        if (ksp != nullptr)
+            KSPDestroy(&ksp);
+        throw InputError(std::string("linear solver '") + solver_name(preconditioner) +
+                         "': PETSc refused its options (PETSC_OPTIONS): " + failure.what());
+    }
+}
 
 std::unique_ptr<LinearSolver> make_petsc_cg_solver(PetscPreconditioner preconditioner, double tolerance,
                                                    int max_iterations)

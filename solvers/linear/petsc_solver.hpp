@@ -15,6 +15,15 @@ enum class PetscPreconditioner {
 /// True when this build has PETSc (libpetsc-real-dev found by CMake).
 bool petsc_linear_solvers_built();
 
+/// Starts PETSc and reads its options database (the PETSC_OPTIONS
+/// environment variable) into a throwaway solver configured as
+/// make_petsc_cg_solver's: InputError naming PETSC_OPTIONS and PETSc's own
+/// message when PETSc refuses a value (e.g. -pc_gamg_threshold abc) or
+/// cannot start. Options of the multigrid's levels are read only at its
+/// setup, so a bad value there surfaces as a failed setup instead.
+/// InputError when this build has no PETSc.
+void check_petsc_options(PetscPreconditioner preconditioner);
+
 /// Conjugate gradients (PETSc KSPCG) on a symmetric positive definite matrix
 /// (lower triangle read), preconditioned by an algebraic multigrid, from x = 0
 /// until ‖b − Ax‖ ≤ tolerance·‖b‖ (not_converged after max_iterations).

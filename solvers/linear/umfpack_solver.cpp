@@ -82,11 +82,9 @@ public:
 
     LinearStatus solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override
     {
-        if (!factorized_)
-            return fail(LinearStatus::failed, "solve called without a successful factorization");
-        if (b.size() != matrix_.rows())
-            return fail(LinearStatus::failed, "right-hand side has size " + std::to_string(b.size()) +
-                                                  ", matrix has " + std::to_string(matrix_.rows()) + " rows");
+        const std::string unusable = describe_unusable_solve(factorized_, b.size(), matrix_.rows());
+        if (!unusable.empty())
+            return fail(LinearStatus::failed, unusable);
         // A separate output vector: UMFPACK cannot solve in place, and x may alias b.
         Eigen::VectorXd solution(b.size());
         // _solve_impl is Eigen's public (if internal) entry that reports

@@ -152,7 +152,7 @@ private:
     double f_ = 0.0;
     double diagonal_scale_ = 1.0;
     bool trust_exact_ = false;     ///< the last step's ρ ≥ ½
-    double kept_shift_ = 0.0;      ///< the shift the exact Hessian needed last time
+    double kept_shift_ = 0.0;      ///< the shift of the next exact Hessian (Levenberg-Marquardt)
 };
 
 Result ProjectedNewtonRun::run()
@@ -183,9 +183,9 @@ Result ProjectedNewtonRun::run()
             return finish(Status::max_iterations, "iteration limit reached");
         recorder_.set_iterations(iteration);
         // H: the exact Hessian while its quadratic model predicted the last
-        // step well (ρ ≥ ½), shifted by the multiple of I that made it positive
-        // definite last time; the PSD projection the problem offers (seed 000
-        // §5.6) otherwise, and always at the start. Per-element projection
+        // step well (ρ ≥ ½), shifted by the kept multiple of I, unless that
+        // is indefinite (exact_step); the PSD projection the problem offers
+        // (seed 000 §5.6) otherwise, and always at the start. Per-element projection
         // alone stiffens H where element terms of opposite sign cancel in the
         // sum, and then converges only linearly; the exact Hessian alone
         // overshoots far from the solution (docs/solvers.md, "Projected Newton").
@@ -360,7 +360,7 @@ NewtonSettings newton_settings(const OptionValues& values)
 {
     NewtonSettings settings;
     settings.linear_solver = values.text("linear_solver");
-    check_linear_solver_built(settings.linear_solver);
+    check_linear_solver_usable(settings.linear_solver);
     settings.line_search.armijo = values.real("armijo");
     settings.line_search.max_backtracks = values.integer("max_backtracks");
     const std::string& reuse = values.text("reuse_factorization");

@@ -25,8 +25,9 @@ inline std::string slurp(const std::string& path)
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-/// Runs `sinew <arguments>` in a scratch folder and captures both streams.
-inline Run run_sinew(const std::string& arguments)
+/// Runs `sinew <arguments>` in a scratch folder and captures both streams;
+/// `environment` ("NAME='value' …") is set for that run only.
+inline Run run_sinew(const std::string& arguments, const std::string& environment = "")
 {
     const auto dir = std::filesystem::temp_directory_path() / "sinew_cli_tests";
     std::filesystem::create_directories(dir);
@@ -35,8 +36,8 @@ inline Run run_sinew(const std::string& arguments)
     const std::string tag = std::to_string(::getpid()) + "_" + std::to_string(++calls);
     const std::string out = (dir / ("stdout_" + tag + ".txt")).string();
     const std::string err = (dir / ("stderr_" + tag + ".txt")).string();
-    const std::string command =
-        "cd '" + dir.string() + "' && '" SINEW_EXECUTABLE "' " + arguments + " >'" + out + "' 2>'" + err + "'";
+    const std::string command = "cd '" + dir.string() + "' && " + environment + " '" SINEW_EXECUTABLE "' " +
+                                arguments + " >'" + out + "' 2>'" + err + "'";
     const int status = std::system(command.c_str());
     Run run;
     run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

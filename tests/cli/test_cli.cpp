@@ -180,3 +180,17 @@ TEST_CASE("sinew hessian writes the Hessian at the starting point as a Matrix Ma
     }
     CHECK(expected.empty());
 }
+
+TEST_CASE("a value PETSc refuses in PETSC_OPTIONS is an input error before anything is written")
+{
+    const std::string folder = scratch("petsc_options_output");
+    std::filesystem::remove_all(folder);
+    const Run run = run_sinew("solve qr-plate --option linear_solver=petsc-cg-gamg --output '" + folder + "'",
+                              "PETSC_OPTIONS='-pc_gamg_threshold abc'");
+    CAPTURE(run.err);
+    CHECK(run.exit_code == 2);
+    CHECK(lines(run.err) == 1);
+    // With PETSc: PETSc's own message names the value; without: how to get PETSc.
+    CHECK_THAT(run.err, Catch::Matches("sinew: .*(PETSC_OPTIONS.*abc|needs PETSc).*\n"));
+    CHECK_FALSE(std::filesystem::exists(folder));
+}
