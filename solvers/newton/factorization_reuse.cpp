@@ -18,6 +18,11 @@ bool FactorizationReuse::solve(const SparseMatrix& lower, double shift, const Ve
     found_indefinite_ = false;
     if (!kept_)
         return false;
+    if (steps_to_skip_ > 0) {
+        --steps_to_skip_;
+        ++skipped_steps_;
+        return false;
+    }
     const auto start = std::chrono::steady_clock::now();
     auto multiply = [&](const VectorXd& v, VectorXd& product) {
         product.noalias() = lower.selfadjointView<Eigen::Lower>() * v;  // A v
@@ -30,11 +35,21 @@ bool FactorizationReuse::solve(const SparseMatrix& lower, double shift, const Ve
     cg_iterations_ += outcome.iterations;
     if (outcome.status == CgStatus::converged) {
         ++reused_steps_;
+        refusals_in_row_ = 0;
         return true;
     }
     ++refused_steps_;
     found_indefinite_ = outcome.status == CgStatus::negative_curvature;
+    if (!found_indefinite_)
+        back_off();
     return false;
+}
+
+void FactorizationReuse::back_off()
+{
+    ++refusals_in_row_;
+    // 2^(k−1) − 1 after the k-th refusal: 0, 1, 3, 7, then kMaxSkippedSteps = 2⁴ − 1
+    steps_to_skip_ = refusals_in_row_ > 4 ? kMaxSkippedSteps : (1 << (refusals_in_row_ - 1)) - 1;
 }
 
 } // namespace sinew

@@ -19,6 +19,15 @@ struct ReuseSettings {
 /// meets a direction of non-positive curvature (A + σI indefinite), is
 /// refused, and the caller factorizes A afresh, which becomes the kept one.
 /// The first iteration has nothing kept and always factorizes.
+///
+/// Refusals for the iteration limit in a row back off: after the k-th, the
+/// next 2^(k−1) − 1 steps (at most kMaxSkippedSteps) skip CG and factorize
+/// at once, so a problem whose Hessian changes too fast for a kept factor
+/// (a penalty at large κ) pays about one factorization per step, not a
+/// factorization plus max_cg_iterations CG iterations. A step CG delivers
+/// ends the run of refusals. A refusal for non-positive curvature is cheap
+/// and tells the caller something (take the projected step), so it neither
+/// counts nor is skipped.
 class FactorizationReuse {
 public:
     FactorizationReuse(RegularizedFactorization& factorization, ReuseSettings settings);
@@ -39,9 +48,17 @@ public:
     int cg_iterations() const { return cg_iterations_; }
     int reused_steps() const { return reused_steps_; }
     int refused_steps() const { return refused_steps_; }
+    /// Steps that factorized without trying CG, backing off after refusals.
+    int skipped_steps() const { return skipped_steps_; }
     double cg_seconds() const { return cg_s_; }
 
+    /// The most steps one backoff skips.
+    static constexpr int kMaxSkippedSteps = 15;
+
 private:
+    /// After another refusal for the iteration limit: the steps to skip next.
+    void back_off();
+
     RegularizedFactorization& factorization_;
     ReuseSettings settings_;
     bool kept_ = false;
@@ -49,6 +66,9 @@ private:
     int cg_iterations_ = 0;
     int reused_steps_ = 0;
     int refused_steps_ = 0;
+    int skipped_steps_ = 0;
+    int refusals_in_row_ = 0;  ///< refusals for the iteration limit since CG last delivered a step
+    int steps_to_skip_ = 0;
     double cg_s_ = 0.0;
 };
 

@@ -48,6 +48,7 @@ private:
         recorder_.add_statistic("cg_iterations", reuse_.cg_iterations());
         recorder_.add_statistic("reused_factorization_steps", reuse_.reused_steps());
         recorder_.add_statistic("cg_refused_steps", reuse_.refused_steps());
+        recorder_.add_statistic("cg_skipped_steps", reuse_.skipped_steps());
         recorder_.add_statistic("cg_s", reuse_.cg_seconds());
         return recorder_.finish(status, message, x_, factorization_);
     }

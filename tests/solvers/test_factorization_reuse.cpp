@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 using namespace sinew;
 using Eigen::MatrixXd;
@@ -200,6 +201,69 @@ TEST_CASE("a refused reuse says whether CG found the matrix indefinite or only r
     CHECK((d - b).norm() < 1e-10 * b.norm());
     reuse.forget();
     CHECK_FALSE(reuse.solve(A.matrix(), 2.0, b, 1e-8, d));
+}
+
+TEST_CASE("refusals for the iteration limit in a row back off and a delivered step ends the backoff")
+{
+    const int n = 30;
+    SparsityPattern pattern;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j <= i; ++j)
+            pattern.add(i, j);
+    auto lower_values = [&](const MatrixXd& M) {
+        VectorXd values(pattern.nonzeros());
+        for (int k = 0; k < pattern.nonzeros(); ++k)
+            values[k] = M(pattern.rows[k], pattern.cols[k]);
+        return values;
+    };
+    PatternMatrix A(pattern, n);
+    A.fill(lower_values(MatrixXd::Identity(n, n)));
+    RegularizedFactorization factorization(make_linear_solver("cholmod"));
+    ReuseSettings settings;
+    settings.enabled = true;
+    settings.max_cg_iterations = 3;
+    FactorizationReuse reuse(factorization, settings);
+    const VectorXd b = random_vector(n, 7);
+    VectorXd d;
+    double shift = 0.0;
+    REQUIRE(factorization.solve_shifted(A, shift, 1.0, b, d));
+    reuse.keep();
+    // Preconditioned by I, this SPD matrix needs more than 3 CG iterations:
+    // every attempt is refused. Record which calls ran CG.
+    A.fill(lower_values(random_spd(n, 1e4, 8)));
+    std::vector<int> attempted;
+    for (int call = 0; call < 40; ++call) {
+        const int before = reuse.cg_iterations();
+        CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
+        CHECK_FALSE(reuse.found_indefinite());
+        if (reuse.cg_iterations() > before)
+            attempted.push_back(call);
+    }
+    // Skips of 0, 1, 3, 7, 15, 15 calls after the 1st to 6th refusal.
+    CHECK(attempted == std::vector<int>{0, 1, 3, 7, 15, 31});
+    CHECK(reuse.refused_steps() == 6);
+    CHECK(reuse.skipped_steps() == 34);
+    // The calls skipped after the 6th refusal run out; I is solved by CG in
+    // one iteration, and that ends the backoff: the next refusal skips nothing.
+    for (int call = 40; call < 47; ++call)
+        CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
+    A.fill(lower_values(MatrixXd::Identity(n, n)));
+    CHECK(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
+    A.fill(lower_values(random_spd(n, 1e4, 8)));
+    CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
+    const int refused = reuse.refused_steps();
+    CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
+    CHECK(reuse.refused_steps() == refused + 1);
+    // A refusal for negative curvature neither counts nor is skipped.
+    A.fill(lower_values(-MatrixXd::Identity(n, n)));
+    const int skipped = reuse.skipped_steps();
+    CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));  // skipped: 1 after the 2nd refusal in a row
+    CHECK(reuse.skipped_steps() == skipped + 1);
+    CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
+    CHECK(reuse.found_indefinite());
+    CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
+    CHECK(reuse.found_indefinite());
+    CHECK(reuse.skipped_steps() == skipped + 1);
 }
 
 TEST_CASE("projected Newton reusing factorizations reaches the same minimum with fewer factorizations")
