@@ -48,8 +48,9 @@ bool FactorizationReuse::solve(const SparseMatrix& lower, double shift, const Ve
 void FactorizationReuse::back_off()
 {
     ++refusals_in_row_;
-    // 2^(k−1) − 1 after the k-th refusal: 0, 1, 3, 7, then kMaxSkippedSteps = 2⁴ − 1
-    steps_to_skip_ = refusals_in_row_ > 4 ? kMaxSkippedSteps : (1 << (refusals_in_row_ - 1)) - 1;
+    // 2^(k−3) − 1 after the k-th refusal, k ≥ 3: 0, 1, 3, 7, then kMaxSkippedSteps = 2⁴ − 1
+    const int doublings = refusals_in_row_ - kRefusalsBeforeBackoff;
+    steps_to_skip_ = doublings < 0 ? 0 : doublings >= 4 ? kMaxSkippedSteps : (1 << doublings) - 1;
 }
 
 } // namespace sinew

@@ -20,11 +20,13 @@ struct ReuseSettings {
 /// refused, and the caller factorizes A afresh, which becomes the kept one.
 /// The first iteration has nothing kept and always factorizes.
 ///
-/// Refusals for the iteration limit in a row back off: after the k-th, the
-/// next 2^(k−1) − 1 steps (at most kMaxSkippedSteps) skip CG and factorize
-/// at once, so a problem whose Hessian changes too fast for a kept factor
-/// (a penalty at large κ) pays about one factorization per step, not a
-/// factorization plus max_cg_iterations CG iterations. A step CG delivers
+/// Refusals for the iteration limit in a row back off: after the k-th,
+/// k ≥ kRefusalsBeforeBackoff = 3, the next 2^(k−3) − 1 steps (at most
+/// kMaxSkippedSteps) skip CG and factorize at once, so a problem whose
+/// Hessian changes too fast for a kept factor (a penalty at large κ) pays
+/// about one factorization per step, not a factorization plus
+/// max_cg_iterations CG iterations. Two refusals in a row are common where
+/// the Hessian turns (the straight 206k beam has them) and do not back off. A step CG delivers
 /// ends the run of refusals. A refusal for non-positive curvature is cheap
 /// and tells the caller something (take the projected step), so it neither
 /// counts nor is skipped.
@@ -52,6 +54,8 @@ public:
     int skipped_steps() const { return skipped_steps_; }
     double cg_seconds() const { return cg_s_; }
 
+    /// Refusals in a row from which on the steps after a refusal are skipped.
+    static constexpr int kRefusalsBeforeBackoff = 3;
     /// The most steps one backoff skips.
     static constexpr int kMaxSkippedSteps = 15;
 

@@ -18,6 +18,18 @@ namespace {
 
 using Eigen::VectorXd;
 
+/// The shift of the next exact try after H + σI was found indefinite:
+/// next_shift's first (1e-8·diagonal_scale) after none, then 100σ, at most
+/// 1e20. Each try that fails costs an iteration on the projected Hessian, so
+/// the shift climbs two decades a try, as Ipopt's δw does by κ̄w⁺ = 100
+/// (Wächter & Biegler 2006, §3.1); it comes down a decade per well-predicted
+/// step (line_search_and_update).
+double raised_shift(double shift, double diagonal_scale)
+{
+    constexpr double kGrowth = 100.0;
+    return shift == 0.0 ? next_shift(0.0, diagonal_scale) : std::min(kGrowth * shift, 1e20);
+}
+
 /// One run of projected Newton: the Hessian policy (which H, which shift)
 /// over the shared line search, regularized factorization and recorder.
 class ProjectedNewtonRun {
@@ -65,6 +77,7 @@ private:
         hessian_.fill(hessian_values_);
         if (bounds_.any())
             hessian_.fix_variables(bounds_.fixed());
+        diagonal_scale_ = std::max(1.0, hessian_.matrix().diagonal().cwiseAbs().maxCoeff());
         recorder_.end_assembly();
     }
     /// Solves (H + shift·I) d = −∇f (zero at variables held at a bound) into
@@ -221,20 +234,19 @@ bool ProjectedNewtonRun::newton_step(bool& exact)
 
 // The step on the exact H + σI, σ = kept_shift_. A problem with a
 // projection tries that σ once: when H + σI is indefinite, σ is raised for
-// the next exact iteration (×10, as in the shift loop) and this one takes
-// the projected step, one factorization where raising σ until Cholesky
+// the next exact iteration (raised_shift) and this one takes the projected
+// step, one factorization where raising σ until Cholesky
 // accepts it costs one per σ tried (three per exact iteration on the twisted
 // 206k cantilever, docs/benchmarks.md). Without a projection, σ is raised
 // until H + σI is positive definite.
 ShiftedSolve ProjectedNewtonRun::exact_step()
 {
     assemble_hessian(Projection::none);
-    diagonal_scale_ = std::max(1.0, hessian_.matrix().diagonal().cwiseAbs().maxCoeff());
     double shift = kept_shift_;
     if (projected_) {
         const ShiftedSolve outcome = attempt_shifted(shift, step_);
         if (outcome == ShiftedSolve::indefinite)
-            kept_shift_ = next_shift(kept_shift_, diagonal_scale_);
+            kept_shift_ = raised_shift(kept_shift_, diagonal_scale_);
         return outcome;
     }
     if (!solve_shifted(shift, step_, diagonal_scale_))
@@ -246,7 +258,6 @@ ShiftedSolve ProjectedNewtonRun::exact_step()
 bool ProjectedNewtonRun::projected_step()
 {
     assemble_hessian(Projection::clamp);
-    diagonal_scale_ = std::max(1.0, hessian_.matrix().diagonal().cwiseAbs().maxCoeff());
     recorder_.add_statistic("projected_iterations", 1.0);
     double shift = 0.0;
     return solve_shifted(shift, step_, diagonal_scale_);

@@ -239,25 +239,28 @@ TEST_CASE("refusals for the iteration limit in a row back off and a delivered st
         if (reuse.cg_iterations() > before)
             attempted.push_back(call);
     }
-    // Skips of 0, 1, 3, 7, 15, 15 calls after the 1st to 6th refusal.
-    CHECK(attempted == std::vector<int>{0, 1, 3, 7, 15, 31});
-    CHECK(reuse.refused_steps() == 6);
-    CHECK(reuse.skipped_steps() == 34);
-    // The calls skipped after the 6th refusal run out; I is solved by CG in
-    // one iteration, and that ends the backoff: the next refusal skips nothing.
-    for (int call = 40; call < 47; ++call)
+    // Skips of 0, 0, 0, 1, 3, 7, 15, 15 calls after the 1st to 8th refusal.
+    CHECK(attempted == std::vector<int>{0, 1, 2, 3, 5, 9, 17, 33});
+    CHECK(reuse.refused_steps() == 8);
+    CHECK(reuse.skipped_steps() == 32);
+    // The 15 calls skipped after the 8th refusal run out; I is solved by CG
+    // in one iteration, and that ends the backoff: three refusals follow
+    // that skip nothing.
+    for (int call = 40; call < 49; ++call)
         CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
+    CHECK(reuse.refused_steps() == 8);
     A.fill(lower_values(MatrixXd::Identity(n, n)));
     CHECK(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
     A.fill(lower_values(random_spd(n, 1e4, 8)));
-    CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
-    const int refused = reuse.refused_steps();
-    CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
-    CHECK(reuse.refused_steps() == refused + 1);
-    // A refusal for negative curvature neither counts nor is skipped.
+    for (int refusal = 1; refusal <= 4; ++refusal) {
+        CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
+        CHECK(reuse.refused_steps() == 8 + refusal);
+    }
+    // The 4th refusal in a row skips the next call; a refusal for negative
+    // curvature after it neither counts nor is skipped.
     A.fill(lower_values(-MatrixXd::Identity(n, n)));
     const int skipped = reuse.skipped_steps();
-    CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));  // skipped: 1 after the 2nd refusal in a row
+    CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
     CHECK(reuse.skipped_steps() == skipped + 1);
     CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
     CHECK(reuse.found_indefinite());
