@@ -51,6 +51,46 @@ VectorXd random_vector(int n, unsigned seed)
     return v;
 }
 
+/// The full lower-triangle pattern of an n × n matrix, given the values of dense ones.
+SparsityPattern dense_lower_pattern(int n)
+{
+    SparsityPattern pattern;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j <= i; ++j)
+            pattern.add(i, j);
+    return pattern;
+}
+
+/// M's entries at the pattern's positions, in its order.
+VectorXd lower_values(const SparsityPattern& pattern, const MatrixXd& M)
+{
+    VectorXd values(pattern.nonzeros());
+    for (int k = 0; k < pattern.nonzeros(); ++k)
+        values[k] = M(pattern.rows[k], pattern.cols[k]);
+    return values;
+}
+
+/// A 30 × 30 matrix A (dense lower pattern) starting as I, a CHOLMOD
+/// factorization, and reuse whose CG may take 3 iterations.
+struct SmallReuse {
+    static constexpr int n = 30;
+    SmallReuse() { fill(MatrixXd::Identity(n, n)); }
+    void fill(const MatrixXd& M) { A.fill(lower_values(pattern, M)); }
+    /// Factorizes A and keeps it as the preconditioner of later solves.
+    void factorize_and_keep(const VectorXd& b)
+    {
+        double shift = 0.0;
+        VectorXd d;
+        REQUIRE(factorization.solve_shifted(A, shift, 1.0, b, d));
+        reuse.keep();
+    }
+
+    const SparsityPattern pattern = dense_lower_pattern(n);
+    PatternMatrix A{pattern, n};
+    RegularizedFactorization factorization{make_linear_solver("cholmod")};
+    FactorizationReuse reuse{factorization, ReuseSettings{true, 3}};
+};
+
 } // namespace
 
 TEST_CASE("preconditioned CG reaches the relative residual it is asked for")
@@ -160,39 +200,19 @@ TEST_CASE("Eisenstat-Walker forcing terms: loose at first, safeguarded, O(gradie
     CHECK(forcing.next(0.02) == Approx(0.02));
 }
 
-TEST_CASE("a refused reuse says whether CG found the matrix indefinite or only ran out of iterations")
+TEST_CASE_METHOD(SmallReuse, "a refused reuse says whether CG found the matrix indefinite or only ran out of iterations")
 {
-    const int n = 30;
-    SparsityPattern pattern;
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j <= i; ++j)
-            pattern.add(i, j);
-    auto lower_values = [&](const MatrixXd& M) {
-        VectorXd values(pattern.nonzeros());
-        for (int k = 0; k < pattern.nonzeros(); ++k)
-            values[k] = M(pattern.rows[k], pattern.cols[k]);
-        return values;
-    };
-    PatternMatrix A(pattern, n);
-    A.fill(lower_values(MatrixXd::Identity(n, n)));
-    RegularizedFactorization factorization(make_linear_solver("cholmod"));
-    ReuseSettings settings;
-    settings.enabled = true;
-    settings.max_cg_iterations = 3;
-    FactorizationReuse reuse(factorization, settings);
     const VectorXd b = random_vector(n, 5);
     VectorXd d;
     CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 0.1, d));  // nothing kept yet
     CHECK_FALSE(reuse.found_indefinite());
-    double shift = 0.0;
-    REQUIRE(factorization.solve_shifted(A, shift, 1.0, b, d));
-    reuse.keep();
+    factorize_and_keep(b);
     // Preconditioned by I: an SPD matrix with spread eigenvalues needs more than 3 iterations.
-    A.fill(lower_values(random_spd(n, 1e4, 6)));
+    fill(random_spd(n, 1e4, 6));
     CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
     CHECK_FALSE(reuse.found_indefinite());
     // An indefinite one: −I meets negative curvature in the first iteration.
-    A.fill(lower_values(-MatrixXd::Identity(n, n)));
+    fill(-MatrixXd::Identity(n, n));
     CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
     CHECK(reuse.found_indefinite());
     // Shifted past its spectrum it is I again: one iteration.
@@ -203,34 +223,14 @@ TEST_CASE("a refused reuse says whether CG found the matrix indefinite or only r
     CHECK_FALSE(reuse.solve(A.matrix(), 2.0, b, 1e-8, d));
 }
 
-TEST_CASE("refusals for the iteration limit in a row back off and a delivered step ends the backoff")
+TEST_CASE_METHOD(SmallReuse, "refusals for the iteration limit in a row back off and a delivered step ends the backoff")
 {
-    const int n = 30;
-    SparsityPattern pattern;
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j <= i; ++j)
-            pattern.add(i, j);
-    auto lower_values = [&](const MatrixXd& M) {
-        VectorXd values(pattern.nonzeros());
-        for (int k = 0; k < pattern.nonzeros(); ++k)
-            values[k] = M(pattern.rows[k], pattern.cols[k]);
-        return values;
-    };
-    PatternMatrix A(pattern, n);
-    A.fill(lower_values(MatrixXd::Identity(n, n)));
-    RegularizedFactorization factorization(make_linear_solver("cholmod"));
-    ReuseSettings settings;
-    settings.enabled = true;
-    settings.max_cg_iterations = 3;
-    FactorizationReuse reuse(factorization, settings);
     const VectorXd b = random_vector(n, 7);
     VectorXd d;
-    double shift = 0.0;
-    REQUIRE(factorization.solve_shifted(A, shift, 1.0, b, d));
-    reuse.keep();
+    factorize_and_keep(b);
     // Preconditioned by I, this SPD matrix needs more than 3 CG iterations:
     // every attempt is refused. Record which calls ran CG.
-    A.fill(lower_values(random_spd(n, 1e4, 8)));
+    fill(random_spd(n, 1e4, 8));
     std::vector<int> attempted;
     for (int call = 0; call < 40; ++call) {
         const int before = reuse.cg_iterations();
@@ -249,16 +249,16 @@ TEST_CASE("refusals for the iteration limit in a row back off and a delivered st
     for (int call = 40; call < 49; ++call)
         CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
     CHECK(reuse.refused_steps() == 8);
-    A.fill(lower_values(MatrixXd::Identity(n, n)));
+    fill(MatrixXd::Identity(n, n));
     CHECK(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
-    A.fill(lower_values(random_spd(n, 1e4, 8)));
+    fill(random_spd(n, 1e4, 8));
     for (int refusal = 1; refusal <= 4; ++refusal) {
         CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
         CHECK(reuse.refused_steps() == 8 + refusal);
     }
     // The 4th refusal in a row skips the next call; a refusal for negative
     // curvature after it neither counts nor is skipped.
-    A.fill(lower_values(-MatrixXd::Identity(n, n)));
+    fill(-MatrixXd::Identity(n, n));
     const int skipped = reuse.skipped_steps();
     CHECK_FALSE(reuse.solve(A.matrix(), 0.0, b, 1e-8, d));
     CHECK(reuse.skipped_steps() == skipped + 1);
