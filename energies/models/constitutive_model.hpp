@@ -2,6 +2,7 @@
 #include "sinew/core/projection.hpp"
 #include <Eigen/Core>
 
+#include <limits>
 #include <string>
 
 namespace sinew {
@@ -44,6 +45,19 @@ public:
     /// decompositions are shared.
     virtual double evaluate(const Deformation& F, const Point& point, Stress* P, Stiffness* dPdF,
                             Projection projection) const = 0;
+
+    /// ∂ψ/∂α returned and ∂P/∂α written into `dP_dalpha` (when not null): the
+    /// derivatives in the activation α of the material point, at `point`'s own
+    /// α. A model whose ψ does not depend on α (the default) gives zeros; the
+    /// muscle model, linear in α (seed 000 eq. 4), gives its active part.
+    /// +infinity (and a zero ∂P/∂α) where ψ is undefined, as energy().
+    virtual double activation_derivative(const Deformation& F, const Point& point, Stress* dP_dalpha) const
+    {
+        if (dP_dalpha)
+            dP_dalpha->setZero();
+        return energy(F, point) < std::numeric_limits<double>::infinity() ? 0.0
+                                                                           : std::numeric_limits<double>::infinity();
+    }
 
     /// evaluate for k < count: ψ(F[k]) into psi[k], and P, ∂P/∂F into P[k],
     /// dPdF[k] when those arrays are not null. The default calls evaluate for

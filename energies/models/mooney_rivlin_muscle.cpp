@@ -391,6 +391,57 @@ double MooneyRivlinMuscle::evaluate(const Deformation& F, const Point& point, St
     return psi;
 }
 
+namespace {
+
+/// L and ∂L/∂F = U diag(ℓ'(σ)) Vᵀ of one F for the thresholded L of
+/// log_volume (seed 000 §5.5; ln J and F⁻ᵀ where no σ is below c).
+struct VolumeOfOne {
+    double L = 0.0;
+    Eigen::Matrix3d gradient = Eigen::Matrix3d::Zero();
+};
+
+VolumeOfOne volume_of_one(const Eigen::Matrix3d& F, double c)
+{
+    const Matrix3<Wide> Fw = detail::packed_in_lanes<kSimdLanes>(&F, 1);
+    const Wide J = dot(Fw.col[0], determinant_gradient(Fw).col[0]);
+    const Wide I1 = dot(Fw.col[0], Fw.col[0]) + dot(Fw.col[1], Fw.col[1]) + dot(Fw.col[2], Fw.col[2]);
+    const detail::Svd3<Wide> svd = detail::rotation_variant_svd_of(Fw);
+    const LogVolume volume = log_volume(J > 0.0 && 2.0 * J >= c * I1, J, &svd.sigma, c);
+    VolumeOfOne result;
+    result.L = volume.L.lane(0);
+    for (int l = 0; l < 3; ++l)
+        for (int i = 0; i < 3; ++i)
+            for (int k = 0; k < 3; ++k)
+                result.gradient(i, l) += volume.slope[k].lane(0) * svd.U(i, k).lane(0) * svd.V(l, k).lane(0);
+    return result;
+}
+
+} // namespace
+
+double MooneyRivlinMuscle::activation_derivative(const Deformation& F, const Point& point, Stress* dP_dalpha) const
+{
+    if (dP_dalpha)
+        dP_dalpha->setZero();
+    if (!(energy(F, point) < std::numeric_limits<double>::infinity()))
+        return std::numeric_limits<double>::infinity();
+    if (!fibers_on_)
+        return 0.0;
+    // λ̃ = |F a₀|; λ = λ̃ (physbam) or e^(−L/3) λ̃ (deviatoric, §4.2, J^(−1/3) above the threshold).
+    const Eigen::Vector3d image = F * point.fiber;
+    const double mu = image.norm();
+    const bool deviatoric = stretch_ == FiberStretch::deviatoric;
+    const VolumeOfOne volume = deviatoric ? volume_of_one(F, threshold_) : VolumeOfOne{};
+    const double lambda = deviatoric ? mu * std::exp(-volume.L / 3.0) : mu;
+    const FiberCurvePoint active = active_.evaluate(lambda);
+    if (dP_dalpha && mu > 0.0) {
+        // ∂P/∂α = f_a ∂λ/∂F, ∂λ/∂F = (λ/λ̃²)(F a₀)a₀ᵀ − (λ/3) ∂L/∂F (the second term deviatoric only).
+        const Eigen::Matrix3d dlambda =
+            (lambda / (mu * mu)) * image * point.fiber.transpose() - (lambda / 3.0) * volume.gradient;
+        *dP_dalpha = active.stress * dlambda;
+    }
+    return active.energy;  // ∂ψ/∂α = Φ_a(λ)
+}
+
 void MooneyRivlinMuscle::evaluate_batch(int count, const Deformation* F, const Point* points, double* psi,
                                         Stress* P, Stiffness* dPdF, Projection projection) const
 {

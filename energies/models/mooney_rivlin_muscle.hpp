@@ -53,6 +53,11 @@ public:
     /// and the fiber tension derivative f' raised to zero.
     double evaluate(const Deformation& F, const Point& point, Stress* P, Stiffness* dPdF,
                     Projection projection) const override;
+    /// ψ is linear in α (seed 000 eq. 4, §4.2): ∂ψ/∂α = Φ_a(λ) and
+    /// ∂P/∂α = f_a(λ) ∂λ/∂F, f_a the active curve at full activation, with
+    /// ∂λ/∂F = (F a₀/λ̃) a₀ᵀ (physbam) or λ((F a₀)a₀ᵀ/λ̃² − ⅓ ∂L/∂F) (deviatoric,
+    /// L the thresholded ln J of §5.5). Zero with sigma_max = 0.
+    double activation_derivative(const Deformation& F, const Point& point, Stress* dP_dalpha) const override;
     /// kSimdLanes elements side by side (evaluate_lanes).
     void evaluate_batch(int count, const Deformation* F, const Point* points, double* psi, Stress* P,
                         Stiffness* dPdF, Projection projection) const override;

@@ -34,6 +34,8 @@ public:
     virtual void add_gradient(ConstVectorRef x, VectorRef gradient) const = 0;
     virtual void add_hessian(ConstVectorRef x, Projection projection, const StencilSlots& slots,
                              VectorRef values) const = 0;
+    virtual void add_activation_gradient(ConstVectorRef x, const std::vector<int>& elements,
+                                         VectorRef gradient) const = 0;
     virtual Eigen::VectorXd stress_norms(ConstVectorRef x) const = 0;
     virtual void set_fiber(int element, const Eigen::VectorXd& fiber) = 0;
     virtual Eigen::VectorXd fiber(int element) const = 0;
@@ -189,6 +191,20 @@ public:
                 add_lower_triangle(H, &slots(0, e), out);
             }
         });
+    }
+
+    void add_activation_gradient(ConstVectorRef x, const std::vector<int>& elements,
+                                 VectorRef gradient) const override
+    {
+        double* out = gradient.data();
+        for (const int e : elements) {
+            typename Model::Stress dP_dalpha;
+            model(e).activation_derivative(deformation_gradient(x, e), points_[e], &dP_dalpha);
+            const typename Kinematics::NodalVectors g = Kinematics::gradient(dP_dalpha, rest_inverse_[e], measure_[e]);
+            for (int a = 0; a < Kinematics::kNodes; ++a)
+                for (int i = 0; i < Rows; ++i)
+                    out[elements_(a, e) * Rows + i] += g(i, a);
+        }
     }
 
     Eigen::VectorXd stress_norms(ConstVectorRef x) const override
@@ -403,6 +419,17 @@ void check_unit_interval(double value, int element, const char* what)
 }
 
 } // namespace
+
+void ElasticPotential::add_activation_gradient(ConstVectorRef x, const std::vector<int>& elements,
+                                               VectorRef gradient) const
+{
+    if (x.size() != dimension() * num_nodes() || gradient.size() != x.size())
+        throw InputError("elastic potential: activation gradient of " + std::to_string(x.size()) + " coordinates into " +
+                         std::to_string(gradient.size()) + ", expected " + std::to_string(dimension() * num_nodes()));
+    for (const int e : elements)
+        check_element(e, num_elements());
+    elements_->add_activation_gradient(x, elements, gradient);
+}
 
 Eigen::VectorXd ElasticPotential::stress_norms(ConstVectorRef x) const { return elements_->stress_norms(x); }
 

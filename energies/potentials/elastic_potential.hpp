@@ -61,6 +61,11 @@ public:
     const Stencils& hessian_stencils() const override;
     void add_hessian(ConstVectorRef x, Projection projection, const StencilSlots& slots, VectorRef values) override;
 
+    /// Adds ∂(∇E)/∂α for one activation α shared by `elements` (a muscle,
+    /// seed 000 eq. 4: the force is linear in α, so this is −f_i of §2.1):
+    /// Σ_e W_e ∂P_e/∂α · Dm⁻ᵀ on each element's nodes (simplex_kinematics.hpp).
+    /// InputError for an element out of range or vectors of the wrong size.
+    void add_activation_gradient(ConstVectorRef x, const std::vector<int>& elements, VectorRef gradient) const;
     /// ‖P(F_e)‖_F per element (Pa for tets and 2D triangles, N/m for
     /// membranes): the stress invariant the VTU output shows.
     Eigen::VectorXd stress_norms(ConstVectorRef x) const;

@@ -137,4 +137,30 @@ finite_difference_stiffness(const ConstitutiveModel<Rows, Cols>& model,
     return K;
 }
 
+/// ∂ψ/∂α and ∂P/∂α by central differences in the activation of `point`
+/// (steps α ± h, which may leave [0, 1]: the models are defined for any α).
+template <int Rows, int Cols>
+struct ActivationDifferences {
+    double dpsi = 0.0;
+    typename ConstitutiveModel<Rows, Cols>::Stress dP;
+};
+
+template <int Rows, int Cols>
+ActivationDifferences<Rows, Cols>
+finite_difference_activation(const ConstitutiveModel<Rows, Cols>& model,
+                             const typename ConstitutiveModel<Rows, Cols>::Deformation& F,
+                             const MaterialPoint<Cols>& point, double h)
+{
+    MaterialPoint<Cols> plus = point, minus = point;
+    plus.activation += h;
+    minus.activation -= h;
+    typename ConstitutiveModel<Rows, Cols>::Stress Pp, Pm;
+    const double psi_plus = model.evaluate(F, plus, &Pp, nullptr, Projection::none);
+    const double psi_minus = model.evaluate(F, minus, &Pm, nullptr, Projection::none);
+    ActivationDifferences<Rows, Cols> differences;
+    differences.dpsi = (psi_plus - psi_minus) / (2 * h);
+    differences.dP = (Pp - Pm) / (2 * h);
+    return differences;
+}
+
 } // namespace sinew::test

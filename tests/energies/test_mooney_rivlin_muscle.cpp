@@ -361,6 +361,60 @@ TEST_CASE("mooney-rivlin-muscle: derivatives of inverted elements (thresholded m
     }
 }
 
+TEST_CASE("mooney-rivlin-muscle: dpsi/dalpha and dP/dalpha against differences in the activation", "[energies][muscle]")
+{
+    // ψ is linear in α (seed 000 eq. 4), so central differences in α are
+    // exact but for rounding, whatever the step; ∂P/∂α is checked a second
+    // way too, as the F-differences of ∂ψ/∂α. Every regime, inverted F
+    // included, both fiber stretches.
+    constexpr double kActivationStep = 0.25;
+    constexpr double kTolerance = 1e-7;
+    for (FiberStretch stretch : kStretches) {
+        const ParameterValues values = parameters(true, stretch);
+        const MooneyRivlinMuscle model(values);
+        const double scale = stress_scale(values);
+        std::mt19937 rng(77 + static_cast<int>(stretch));
+        std::vector<Mat3> samples;
+        for (sinew::test::Regime regime : sinew::test::all_regimes())
+            for (int k = 0; k < 200; ++k)
+                samples.push_back(sinew::test::random_deformation<3, 3>(regime, rng));
+        for (int k = 0; k < 200; ++k)
+            samples.push_back(random_inverted(rng));
+        int nonzero = 0;
+        for (const Mat3& F : samples) {
+            const MaterialPoint<3> point = random_point(rng);
+            if (near_a_kink(model, F, point.fiber))
+                continue;
+            CAPTURE(static_cast<int>(stretch), F, point.fiber, point.activation);
+            Stress dP;
+            const double dpsi = model.activation_derivative(F, point, &dP);
+            const auto differences = sinew::test::finite_difference_activation(model, F, point, kActivationStep);
+            CHECK(std::abs(dpsi - differences.dpsi) <= kTolerance * std::max(std::abs(differences.dpsi), 1e-10 * scale));
+            CHECK(sinew::test::relative_difference(dP, differences.dP, 1e-10 * scale) < kTolerance);
+            // ∂P/∂α = ∂(∂ψ/∂α)/∂F: differences of activation_derivative's value in F.
+            Stress dP_of_dpsi;
+            const double h = kStep * std::max(1.0, F.cwiseAbs().maxCoeff());
+            for (int q = 0; q < 9; ++q) {
+                Mat3 Fp = F, Fm = F;
+                Fp.data()[q] += h;
+                Fm.data()[q] -= h;
+                dP_of_dpsi.data()[q] = (model.activation_derivative(Fp, point, nullptr) -
+                                        model.activation_derivative(Fm, point, nullptr)) / (2 * h);
+            }
+            // Φ_a is O(σ_max) where f_a may be near zero: the differences carry
+            // rounding of ε|Φ_a|/h ≈ 1e-10·scale, hence the floor 1e-4·scale.
+            CHECK(sinew::test::relative_difference(dP, dP_of_dpsi, 1e-4 * scale) < kStressTolerance);
+            nonzero += dP.cwiseAbs().maxCoeff() > 0.0;
+        }
+        CHECK(nonzero > 100);
+    }
+    // A model without activation: zeros.
+    const MooneyRivlinMuscle passive({{"sigma_max", 0.0}});
+    Stress dP;
+    CHECK(passive.activation_derivative(Mat3::Identity() * 1.1, MaterialPoint<3>{}, &dP) == 0.0);
+    CHECK(dP.isZero(0.0));
+}
+
 TEST_CASE("mooney-rivlin-muscle: repeated singular values", "[energies][muscle]")
 {
     // The blocks have no (σ_i − σ_j) denominators (closed forms of §4.5.1.4,

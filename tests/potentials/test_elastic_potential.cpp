@@ -211,3 +211,55 @@ TEST_CASE("elastic potential: membrane fibers given in space are stored in each 
     }
     CHECK_THROWS_AS(elastic.set_fiber(0, R.col(2)), InputError);
 }
+
+TEST_CASE("elastic potential: the activation gradient of a muscle is the alpha-difference of the gradient",
+          "[potentials][elastic][activation]")
+{
+    // ∂(∇E)/∂α for one α shared by a set of elements (seed 000 eq. 4), against
+    // central differences of ∇E with that α moved on those elements alone;
+    // every regime, both fiber stretches. Elements outside the set keep theirs.
+    std::mt19937 rng(23);
+    int active_regimes = 0;
+    for (const double stretch : {0.0, 1.0}) {  // fiber_stretch: physbam, deviatoric
+        const Mesh mesh = box_of_tets(2, 2, 2, kH);
+        const GroupModels models{"mooney-rivlin-muscle",
+                                 {{"fiber_stretch", stretch}},
+                                 {{"A", 400.0}, {"B", 100.0}, {"K", 1e5}, {"fiber_stretch", stretch}}};
+        auto elastic = make_elastic(mesh, models);
+        randomize_material_points(*elastic, 3, rng);
+        std::vector<int> muscle;
+        for (int e = 0; e < elastic->num_elements(); e += 3)
+            muscle.push_back(e);
+        TotalPotential E({elastic});
+        for (Regime regime : all_regimes()) {
+            CAPTURE(stretch, regime_name(regime));
+            const Eigen::VectorXd x =
+                deformed<3, 3>(mesh, random_deformation<3, 3>(regime, rng), Eigen::Matrix3d::Identity(), kH, rng);
+            const double alpha = 0.5;
+            for (const int e : muscle)
+                elastic->set_activation(e, alpha);
+            Eigen::VectorXd analytic = Eigen::VectorXd::Zero(x.size());
+            elastic->add_activation_gradient(x, muscle, analytic);
+            const double h = 0.25;  // ∇E is linear in α: the difference is exact but for rounding
+            Eigen::VectorXd g_plus, g_minus;
+            for (const int e : muscle)
+                elastic->set_activation(e, alpha + h);
+            g_plus = gradient_of(E, x);
+            for (const int e : muscle)
+                elastic->set_activation(e, alpha - h);
+            g_minus = gradient_of(E, x);
+            const Eigen::VectorXd differences = (g_plus - g_minus) / (2 * h);
+            // Fibers stretched beyond 1.6 λ_opt exert no active force (the curve is 0 there).
+            const double size = std::max(differences.cwiseAbs().maxCoeff(), 1e-12 * g_plus.cwiseAbs().maxCoeff());
+            CHECK((analytic - differences).cwiseAbs().maxCoeff() <= 1e-8 * size);
+            active_regimes += differences.cwiseAbs().maxCoeff() > 0.0;
+        }
+    }
+    CHECK(active_regimes >= 8);
+    const Mesh mesh = box_of_tets(1, 1, 1, kH);
+    auto elastic = make_elastic(mesh, solid_models()[2]);
+    Eigen::VectorXd x = rest_coordinates(mesh), g = Eigen::VectorXd::Zero(x.size());
+    CHECK_THROWS_AS(elastic->add_activation_gradient(x, {elastic->num_elements()}, g), InputError);
+    Eigen::VectorXd short_gradient = Eigen::VectorXd::Zero(3);
+    CHECK_THROWS_AS(elastic->add_activation_gradient(x, {0}, short_gradient), InputError);
+}
