@@ -85,6 +85,10 @@ public:
     TotalPotential& potential() { return *potential_; }
     const std::vector<DirichletSet>& dirichlet_sets() const { return sets_; }
     int num_prescribed_coordinates() const { return static_cast<int>(prescribed_coordinates_.size()); }
+    /// The coordinates held by a Dirichlet set, and the others, both sorted;
+    /// under elimination variable k is free_coordinates()[k].
+    const std::vector<int>& prescribed_coordinates() const { return prescribed_coordinates_; }
+    const std::vector<int>& free_coordinates() const { return free_coordinates_; }
 
     /// Replaces M and t of set `set` (new rig parameters θ_k): the prescribed
     /// values change, the patterns do not. InputError as check_dirichlet_set.

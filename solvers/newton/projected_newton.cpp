@@ -327,7 +327,16 @@ public:
         return "Newton on the exact Hessian near the solution, PSD-projected elsewhere, CHOLMOD, Armijo; "
                "unconstrained and bound-constrained problems";
     }
-    std::vector<OptionDeclaration> declared_options() const override { return newton_option_declarations(); }
+    std::vector<OptionDeclaration> declared_options() const override
+    {
+        std::vector<OptionDeclaration> declarations = newton_option_declarations();
+        declarations.push_back(real_option("gradient_target", "0",
+                                           "stop when the projected gradient's inf-norm is at most this (absolute, "
+                                           "for a solve warm-started near its solution); 0: tol times its value at "
+                                           "the start",
+                                           0.0, 1e300));
+        return declarations;
+    }
 
     std::optional<std::string> refusal(const Nlp& nlp) const override
     {
@@ -340,13 +349,21 @@ public:
 
     void check_options(const SolverOptions& options) const override
     {
-        newton_settings(read_options(name(), declared_options(), {}, options.backend));
+        settings_of(options);
     }
 
     Result run(Nlp& nlp, const SolverOptions& options) const override
     {
-        const NewtonSettings settings = newton_settings(read_options(name(), declared_options(), {}, options.backend));
-        return run_projected_newton(nlp, options, settings, name());
+        return run_projected_newton(nlp, options, settings_of(options), name());
+    }
+
+private:
+    NewtonSettings settings_of(const SolverOptions& options) const
+    {
+        const OptionValues values = read_options(name(), declared_options(), {}, options.backend);
+        NewtonSettings settings = newton_settings(values);
+        settings.gradient_target = values.real("gradient_target");
+        return settings;
     }
 };
 
