@@ -25,7 +25,7 @@ EquilibriumSolve solve_equilibrium(QuasistaticProblem& problem, const Equilibriu
 {
     const double cold = gradient_norm(problem, problem.variables_of(problem.prescribed_configuration()));
     const double given = gradient_norm(problem, problem.starting_point());
-    const double scale = std::max(std::isfinite(cold) ? cold : 0.0, given);
+    const double scale = std::max({std::isfinite(cold) ? cold : 0.0, given, settings.force_scale});
     SolverOptions options = settings.options;
     if (scale > 0.0 && options.backend.count("gradient_target") == 0)  // unless the caller set it
         options.backend["gradient_target"] = format_number(options.tolerance * scale);

@@ -14,6 +14,11 @@ namespace sinew {
 /// force scale that does not depend on the starting point (solve_equilibrium).
 struct EquilibriumSolveSettings {
     SolverOptions options;
+    /// A floor of the force scale the tolerance is relative to (N): the
+    /// caller's measure of the problem's forces (the rig's: the gradient of its
+    /// muscles at full activation), so that an evaluation with small loads is
+    /// not asked for a gradient below round-off. 0: none.
+    double force_scale = 0.0;
 };
 
 /// An inner solve's outcome: its result, and the equilibrium as all
@@ -29,10 +34,11 @@ struct EquilibriumSolve {
 
 /// Solves `problem` from its starting configuration (set_starting_configuration:
 /// the previous equilibrium, for a warm start) by projected Newton, to
-/// ‖∇_U E‖∞ ≤ tolerance · max(‖∇_U E‖∞ at the cold start, at the given start),
-/// the cold start being the rest positions with the prescribed values: the
-/// same test whatever the warm start (unless the rest positions are already
-/// an equilibrium), so that x(θ) does not depend on the outer solver's path.
+/// ‖∇_U E‖∞ ≤ tolerance · max(‖∇_U E‖∞ at the cold start, at the given start,
+/// force_scale), the cold start being the rest positions with the prescribed
+/// values: the same test whatever the warm start (unless force_scale and the
+/// cold start's gradient are both below the given start's), so that x(θ)
+/// does not depend on the outer solver's path.
 /// A solve that does not converge is a failed evaluation, reported in
 /// `failure`, never an equilibrium to differentiate. InputError for invalid
 /// settings.

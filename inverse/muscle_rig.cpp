@@ -72,6 +72,20 @@ MuscleRig::MuscleRig(RigDefinition definition, EquilibriumSolveSettings settings
     check_solve(*problem_, "projected-newton", settings_.options);
     size_ = bounding_box_diagonal(definition_.mesh.nodes);
     theta_ = RigParameters::neutral(num_muscles());
+    if (settings_.force_scale == 0.0)
+        settings_.force_scale = full_activation_force();
+}
+
+double MuscleRig::full_activation_force() const
+{
+    const Eigen::VectorXd rest = Eigen::Map<const Eigen::VectorXd>(definition_.mesh.nodes.data(), definition_.mesh.nodes.size());
+    Eigen::VectorXd gradient = Eigen::VectorXd::Zero(rest.size());
+    for (const std::vector<int>& muscle : definition_.muscle_elements)
+        elastic_->add_activation_gradient(rest, muscle, gradient);  // ∂(∇E)/∂α at rest, α = 1 for all: Σ −f_i
+    Eigen::VectorXd free(problem_->num_variables());
+    for (int k = 0; k < problem_->num_variables(); ++k)
+        free[k] = gradient[problem_->free_coordinates()[k]];
+    return free.size() > 0 ? free.cwiseAbs().maxCoeff() : 0.0;
 }
 
 RigEvaluation MuscleRig::evaluate(const RigParameters& theta)

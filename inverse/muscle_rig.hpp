@@ -44,6 +44,8 @@ struct RigEvaluation {
 /// one is not repeated.
 class MuscleRig {
 public:
+    /// The inner solves stop at tol × a force scale (solve_equilibrium), by
+    /// default the muscles' force at full activation.
     /// InputError for an invalid mesh or model (ElasticPotential's), an
     /// element of a muscle or a node of a set or landmark out of range, a node
     /// both in the cranium and the jaw set, no landmark, or invalid settings.
@@ -80,6 +82,10 @@ public:
     double sensitivity_seconds() const { return sensitivity_seconds_; }
 
 private:
+    /// ‖Σ_i f_i‖∞ on the free coordinates at rest: the muscles' force at full
+    /// activation, the force scale of the inner solves' tolerance
+    /// (EquilibriumSolveSettings::force_scale) unless the settings give one.
+    double full_activation_force() const;
     void require_evaluated() const;
     /// The factorization at the last equilibrium, made on first use.
     EquilibriumSensitivities& sensitivities();
