@@ -13,5 +13,6 @@ void add_bench_command(CLI::App& app, int& exit_code);
 void add_compare_command(CLI::App& app, int& exit_code);
 void add_energy_command(CLI::App& app, int& exit_code);
 void add_hessian_command(CLI::App& app, int& exit_code);
+void add_mesh_command(CLI::App& app, int& exit_code);
 
 } // namespace sinew::cli

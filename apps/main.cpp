@@ -30,6 +30,7 @@ int main(int argc, char** argv)
     sinew::cli::add_bench_command(app, exit_code);
     sinew::cli::add_energy_command(app, exit_code);
     sinew::cli::add_hessian_command(app, exit_code);
+    sinew::cli::add_mesh_command(app, exit_code);
     if (argc > 1 && argv[1][0] != '-') {
         std::string valid;
         bool known = false;

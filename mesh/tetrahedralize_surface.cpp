@@ -78,8 +78,6 @@ void check_no_self_intersection(const Mesh& surface, const std::string& source)
                      " triangles cross other triangles" + example);
 }
 
-/// TetGen's switches: p (mesh the surface as a piecewise linear complex),
-/// Q (quiet), q<ratio>, a<volume>.
 /// The volume a closed, consistently oriented surface encloses (divergence
 /// theorem): |Σ x0·(x1 × x2)| / 6 over its triangles.
 double enclosed_volume(const Mesh& surface)
@@ -112,6 +110,8 @@ void check_estimated_size(const Mesh& surface, const TetrahedralizeOptions& opti
 /// point, so a run that reaches it would exceed kMaxGeneratedElements.
 constexpr int kMaxAddedPoints = static_cast<int>(kMaxGeneratedElements / 6);
 
+/// TetGen's switches: p (mesh the surface as a piecewise linear complex),
+/// Q (quiet), S<points>, q<ratio>, a<volume>, Y (preserve the surface).
 std::string tetgen_switches(const TetrahedralizeOptions& options)
 {
     std::ostringstream switches;
@@ -121,6 +121,8 @@ std::string tetgen_switches(const TetrahedralizeOptions& options)
         switches << "q" << options.max_radius_edge_ratio;
     if (options.max_volume > 0.0)
         switches << "a" << options.max_volume;
+    if (options.preserve_surface)
+        switches << "Y";
     return switches.str();
 }
 

@@ -14,6 +14,9 @@ struct TetrahedralizeOptions {
     /// -q<ratio>; TetGen's default bound is 2). 0 turns quality refinement
     /// off: TetGen then only adds the points it needs to recover the surface.
     double max_radius_edge_ratio = 2.0;
+    /// Keep the surface as given (TetGen -Y): no point is added on it, so the
+    /// surface's nodes are the first nodes of the result, in their order.
+    bool preserve_surface = false;
 };
 
 /// Fills the closed triangle_3d surface `surface` with tets through TetGen

@@ -1,0 +1,86 @@
+#include "sinew/core/input_error.hpp"
+#include "sinew/mesh/element_geometry.hpp"
+#include "sinew/mesh/face_mesh.hpp"
+#include "sinew/mesh/mesh_validation.hpp"
+
+#include <Eigen/LU>
+#include <catch2/catch.hpp>
+
+#include <set>
+
+using namespace sinew;
+
+TEST_CASE("face generator: a valid shell of about the asked size with muscles, attachments and landmarks",
+          "[mesh][face]")
+{
+    FaceShape shape;
+    shape.target_tets = 8000;
+    const FaceMesh face = generate_face(shape);
+    const Mesh& mesh = face.mesh;
+    CHECK_NOTHROW(validate_mesh(mesh, "face"));
+    CAPTURE(mesh.num_elements(), mesh.num_nodes());
+    CHECK(mesh.num_elements() >= 0.75 * shape.target_tets);
+    CHECK(mesh.num_elements() <= 1.25 * shape.target_tets);
+    // Size of a face: about 13 cm wide, 19 cm tall, the tissue 1.5 cm thick.
+    const Eigen::Vector3d extent = mesh.nodes.rowwise().maxCoeff() - mesh.nodes.rowwise().minCoeff();
+    CHECK(extent.x() == Approx(2 * shape.rho * shape.a).epsilon(0.05));
+    CHECK(extent.y() == Approx(2 * shape.rho * shape.b).epsilon(0.05));
+    double volume = 0.0;
+    for (int e = 0; e < mesh.num_elements(); ++e)
+        volume += element_measure(mesh, e);
+    const double expected = shape.thickness * M_PI *
+                            (shape.a * shape.b * shape.rho * shape.rho - shape.mouth_half_width * shape.mouth_half_height);
+    CHECK(volume == Approx(expected).epsilon(0.15));  // the cell staircase trims the rim
+    // The mouth is an opening: no tet holds a point of its axis, at any depth.
+    int mouth_points = 0;
+    for (double x = -0.5 * shape.mouth_half_width; x <= 0.5 * shape.mouth_half_width; x += 0.002)
+        for (double z = -0.02; z <= shape.c; z += 0.002) {
+            const Eigen::Vector3d p(x, shape.mouth_y, z);
+            ++mouth_points;
+            for (int e = 0; e < mesh.num_elements(); ++e) {
+                Eigen::Matrix3d D;
+                for (int k = 0; k < 3; ++k)
+                    D.col(k) = mesh.nodes.col(mesh.elements(k + 1, e)) - mesh.nodes.col(mesh.elements(0, e));
+                const Eigen::Vector3d b = D.inverse() * (p - mesh.nodes.col(mesh.elements(0, e)));
+                const bool inside = b.minCoeff() >= 0.0 && b.sum() <= 1.0;
+                if (inside)
+                    FAIL_CHECK("tet " << e << " holds the mouth point " << p.transpose());
+            }
+        }
+    CHECK(mouth_points > 100);
+    REQUIRE(face.muscle_names.size() >= 8);
+    REQUIRE(mesh.group_names.size() == face.muscle_names.size() + 1);
+    for (std::size_t m = 0; m < face.muscle_names.size(); ++m) {
+        CAPTURE(face.muscle_names[m]);
+        CHECK(face.muscle_elements[m].size() >= 20);
+        for (const int e : face.muscle_elements[m])
+            CHECK(mesh.element_groups[e] == static_cast<int>(m) + 1);
+    }
+    for (int e = 0; e < mesh.num_elements(); ++e)
+        CHECK(mesh.element_fibers.col(e).norm() == Approx(1.0));
+    CHECK(face.landmarks.size() >= 40);
+    CHECK(std::set<int>(face.landmarks.begin(), face.landmarks.end()).size() == face.landmarks.size());
+    CHECK(face.cranium_nodes.size() > 20);
+    CHECK(face.jaw_nodes.size() > 20);
+    std::set<int> cranium(face.cranium_nodes.begin(), face.cranium_nodes.end());
+    for (const int n : face.jaw_nodes) {
+        CHECK(cranium.count(n) == 0);
+        CHECK(mesh.nodes(1, n) < shape.mouth_y);
+    }
+}
+
+TEST_CASE("face generator: shapes out of range are refused", "[mesh][face][errors]")
+{
+    FaceShape shape;
+    shape.target_tets = 10;
+    CHECK_THROWS_AS(generate_face(shape), InputError);
+    shape = FaceShape{};
+    shape.rho = 1.0;
+    CHECK_THROWS_AS(generate_face(shape), InputError);
+    shape = FaceShape{};
+    shape.mouth_y = -0.2;
+    CHECK_THROWS_AS(generate_face(shape), InputError);
+    shape = FaceShape{};
+    shape.thickness = std::numeric_limits<double>::quiet_NaN();
+    CHECK_THROWS_AS(generate_face(shape), InputError);
+}
