@@ -1,6 +1,7 @@
 #include "cli_options.hpp"
 #include "commands.hpp"
 #include "reuse_bench.hpp"
+#include "rig_bench.hpp"
 #include "strategies_bench.hpp"
 #include "sinew/runs/output_file.hpp"
 #include "sinew/runs/result_json.hpp"
@@ -35,6 +36,8 @@ const char* const kKernelSuite = "kernels";
 const char* const kStrategiesSuite = "strategies";
 /// The suite of factorization reuse, off against on, on every scene (reuse_bench.hpp).
 const char* const kReuseSuite = "reuse";
+/// The suite of rig fits on generated faces (rig_bench.hpp).
+const char* const kRigSuite = "rig";
 
 struct BenchFlags {
     std::string suite = "all";
@@ -45,6 +48,7 @@ struct BenchFlags {
     bool no_plots = false;
     ReferenceTolerances reference;
     long kernel_evaluations = 1000000;
+    std::vector<int> rig_tets = {20000, 100000};
     SolverFlags solver_flags;
 };
 
@@ -256,7 +260,7 @@ void add_bench_command(CLI::App& app, int& exit_code)
                  "the published optimum f* (feasible, at f*, stopped on its own criterion; converged where there "
                  "is no f*), 3 otherwise");
     auto flags = std::make_shared<BenchFlags>();
-    command->add_option("--suite", flags->suite, "suite name (see sinew list), kernels, strategies, reuse, or all")
+    command->add_option("--suite", flags->suite, "suite name (see sinew list), kernels, strategies, reuse, rig, or all")
         ->capture_default_str();
     command->add_option("--output", flags->output,
                         "suite strategies: folder for each problem's comparison and the performance profiles")
@@ -275,6 +279,9 @@ void add_bench_command(CLI::App& app, int& exit_code)
                         "suite kernels: random deformation gradients per model")
         ->capture_default_str()
         ->check(CLI::Range(1, std::numeric_limits<int>::max()));
+    command->add_option("--rig-tets", flags->rig_tets, "suite rig: the face sizes, tets aimed at (repeatable)")
+        ->capture_default_str()
+        ->check(CLI::Range(1000, 2000000));
     add_solver_flags(*command, flags->solver_flags);
 
     command->callback([flags, &exit_code] {
@@ -287,13 +294,14 @@ void add_bench_command(CLI::App& app, int& exit_code)
         const bool kernels_only = flags->suite == kKernelSuite;
         const bool strategies = flags->suite == kStrategiesSuite;
         const bool reuse = flags->suite == kReuseSuite;
-        if (flags->suite != "all" && !kernels_only && !strategies && !reuse &&
+        const bool rig = flags->suite == kRigSuite;
+        if (flags->suite != "all" && !kernels_only && !strategies && !reuse && !rig &&
             std::find(suites.begin(), suites.end(), flags->suite) == suites.end()) {
             std::string valid = "all";
             for (const auto& s : suites)
                 valid += ", " + s;
             throw InputError("unknown suite '" + flags->suite + "'; valid suites: " + valid + ", " + kKernelSuite +
-                             ", " + kStrategiesSuite + ", " + kReuseSuite);
+                             ", " + kStrategiesSuite + ", " + kReuseSuite + ", " + kRigSuite);
         }
         for (const auto& name : flags->solvers)
             find_solver(name);
@@ -306,6 +314,16 @@ void add_bench_command(CLI::App& app, int& exit_code)
                 builtin_scene_text(name);  // scenes only: InputError naming the valid ones
             nlohmann::json runs = nlohmann::json::array();
             const bool converged = run_reuse_bench(flags->problems, options, runs);
+            if (!flags->json.empty())
+                write_text_file(flags->json, nlohmann::json{{"suite", flags->suite}, {"runs", runs}}.dump(2) + "\n");
+            exit_code = converged ? 0 : 3;
+            return;
+        }
+        if (rig) {
+            if (!flags->problems.empty())
+                throw InputError("suite rig generates its faces; drop --problem (choose sizes with --rig-tets)");
+            nlohmann::json runs = nlohmann::json::array();
+            const bool converged = run_rig_bench(flags->rig_tets, flags->solvers, options, runs);
             if (!flags->json.empty())
                 write_text_file(flags->json, nlohmann::json{{"suite", flags->suite}, {"runs", runs}}.dump(2) + "\n");
             exit_code = converged ? 0 : 3;

@@ -194,3 +194,23 @@ TEST_CASE("a value PETSc refuses in PETSC_OPTIONS is an input error before anyth
     CHECK_THAT(run.err, Catch::Matches("sinew: .*(PETSC_OPTIONS.*abc|needs PETSc).*\n"));
     CHECK_FALSE(std::filesystem::exists(folder));
 }
+
+TEST_CASE("sinew mesh face writes a VTU with groups and fibers and attachments and landmarks and refuses bad sizes")
+{
+    const std::string path = scratch("face.vtu");
+    std::filesystem::remove(path);
+    const Run run = run_sinew("mesh face --tets 3000 --out '" + path + "'");
+    CAPTURE(run.out, run.err);
+    REQUIRE(run.exit_code == 0);
+    const std::string vtu = slurp(path);
+    for (const char* name : {"Name=\"group\"", "Name=\"fiber\"", "Name=\"attachment\"", "Name=\"landmark\""})
+        CHECK(vtu.find(name) != std::string::npos);
+    CHECK(run.err.find("10 muscles") != std::string::npos);
+
+    const std::string refused = scratch("refused_face.vtu");
+    std::filesystem::remove(refused);
+    const Run bad = run_sinew("mesh face --tets 10 --out '" + refused + "'");
+    CHECK(bad.exit_code == 2);
+    CHECK(bad.err.find("target_tets") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(refused));
+}

@@ -1,0 +1,158 @@
+#include "rig_bench.hpp"
+
+#include "sinew/core/format_number.hpp"
+#include "sinew/inverse/face_rig.hpp"
+#include "sinew/inverse/rig_fit_run.hpp"
+#include "sinew/runs/result_json.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+namespace sinew::cli {
+namespace {
+
+constexpr double kNoise = 1e-3;  // m
+constexpr unsigned kSeed = 1;
+
+EquilibriumSolveSettings inner_settings()
+{
+    EquilibriumSolveSettings inner;
+    inner.options.tolerance = 1e-10;
+    inner.options.kkt_tolerance = 1e-8;
+    inner.options.max_iterations = 100;
+    return inner;
+}
+
+std::string cell(const char* pattern, double value)
+{
+    char text[64];
+    std::snprintf(text, sizeof text, pattern, value);
+    return text;
+}
+
+void print_fit_header(int tets, int nodes, int parameters, const RigTargets& targets)
+{
+    std::cout << "\n### Face of " << tets << " tets, " << nodes << " nodes, " << parameters << " parameters, "
+              << (targets.noise > 0.0 ? "1 mm noise" : "exact targets") << " (landmark motion RMS "
+              << cell("%.2f", 1e3 * targets.motion_rms) << " mm)\n\n"
+              << "| strategy | status | RMS (mm) | RMS / motion | RMS to exact (mm) | max dα | max dM | max dt (mm) "
+                 "| ‖McᵀMc−I‖ | ‖MjᵀMj−I‖ | outer it | eq. solves | fact. | equilibrium s | sensitivities s | total s |\n"
+              << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+}
+
+void print_fit_row(const RigFitOutcome& o, const RigTargets& targets)
+{
+    std::cout << "| " << o.strategy << " | " << to_string(o.result.status) << " | " << cell("%.3g", 1e3 * o.rms)
+              << " | " << cell("%.2g", o.rms / targets.motion_rms) << " | " << cell("%.3g", 1e3 * o.rms_to_exact)
+              << " | " << cell("%.2g", o.activation_error) << " | " << cell("%.2g", o.map_error) << " | "
+              << cell("%.2g", 1e3 * o.translation_error) << " | " << cell("%.1e", o.cranium_violation) << " | "
+              << cell("%.1e", o.jaw_violation) << " | " << o.result.iterations << " | " << o.equilibrium_solves
+              << " | " << o.factorizations << " | " << cell("%.2f", o.equilibrium_seconds) << " | "
+              << cell("%.2f", o.sensitivity_seconds) << " | " << cell("%.2f", o.seconds) << " |\n"
+              << std::flush;
+}
+
+nlohmann::json outcome_json(const RigFitOutcome& o, int tets, const RigTargets& targets)
+{
+    return {{"suite", "rig"},
+            {"tets", tets},
+            {"noise_m", targets.noise},
+            {"strategy", o.strategy},
+            {"status", to_string(o.result.status)},
+            {"rms_m", number(o.rms)},
+            {"rms_relative", number(o.rms / targets.motion_rms)},
+            {"rms_to_exact_m", number(o.rms_to_exact)},
+            {"activation_error", number(o.activation_error)},
+            {"map_error", number(o.map_error)},
+            {"translation_error_m", number(o.translation_error)},
+            {"cranium_violation", number(o.cranium_violation)},
+            {"jaw_violation", number(o.jaw_violation)},
+            {"outer_iterations", o.result.iterations},
+            {"equilibrium_solves", o.equilibrium_solves},
+            {"factorizations", o.factorizations},
+            {"equilibrium_s", number(o.equilibrium_seconds)},
+            {"sensitivities_s", number(o.sensitivity_seconds)},
+            {"time_s", number(o.seconds)},
+            {"result", to_json(o.result)}};
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// One outer iteration's pieces at θ*, on a fresh rig: the equilibrium solve
+/// from rest and again warm from a nearby θ, the factorization, the forward
+/// Jacobian (a solve per parameter that moves the equilibrium) and the
+/// adjoint gradient (one solve).
+nlohmann::json iteration_cost(const RigDefinition& definition, const RigTargets& targets, int tets)
+{
+    MuscleRig rig(definition, inner_settings());
+    RigParameters near = targets.truth;
+    near.activations = (near.activations.array() + 0.01).min(1.0);
+    auto start = std::chrono::steady_clock::now();
+    rig.evaluate(near);
+    const double cold = seconds_since(start);
+    start = std::chrono::steady_clock::now();
+    const RigEvaluation warm = rig.evaluate(targets.truth);
+    const double warm_s = seconds_since(start);
+    if (!warm.ok)
+        throw std::runtime_error(warm.failure);
+    start = std::chrono::steady_clock::now();
+    const Eigen::VectorXd w = rig.landmark_positions() - targets.targets;
+    const Eigen::VectorXd gradient = rig.landmark_gradient(w);  // factorization + 1 solve
+    const double adjoint_with_factorization = seconds_since(start);
+    start = std::chrono::steady_clock::now();
+    const Eigen::MatrixXd J = rig.landmark_jacobian();  // the kept factors, a solve per parameter
+    const double forward = seconds_since(start);
+    const int solves = rig.num_muscles() + RigParameters::kAffineParameters;
+    std::cout << "| " << tets << " | " << cell("%.2f", cold) << " | " << cell("%.2f", warm_s) << " ("
+              << warm.inner.iterations << " it) | " << cell("%.2f", adjoint_with_factorization) << " | "
+              << cell("%.3f", forward) << " (" << solves << " solves, " << cell("%.4f", forward / solves)
+              << " s each) | " << J.cols() << " |\n"
+              << std::flush;
+    (void)gradient;
+    return {{"suite", "rig-iteration"}, {"tets", tets}, {"cold_solve_s", number(cold)}, {"warm_solve_s", number(warm_s)},
+            {"warm_iterations", warm.inner.iterations}, {"factorization_and_adjoint_s", number(adjoint_with_factorization)},
+            {"forward_s", number(forward)}, {"forward_solves", solves}, {"parameters", J.cols()}};
+}
+
+} // namespace
+
+bool run_rig_bench(const std::vector<int>& sizes, const std::vector<std::string>& solvers,
+                   const SolverOptions& options, nlohmann::json& runs)
+{
+    bool all_converged = true;
+    std::vector<std::pair<RigDefinition, RigTargets>> faces;
+    for (const int tets : sizes) {
+        FaceShape shape;
+        shape.target_tets = tets;
+        const FaceMesh face = generate_face(shape);
+        RigDefinition definition = face_rig(face);
+        for (const double noise : {0.0, kNoise}) {
+            MuscleRig rig(definition, inner_settings());
+            const RigTargets targets = synthesize_targets(rig, face.hinge_point, noise, kSeed);
+            print_fit_header(definition.mesh.num_elements(), definition.mesh.num_nodes(), rig.num_parameters(), targets);
+            for (const RigFitStrategy& strategy : rig_fit_strategies(options)) {
+                if (!solvers.empty() && std::find(solvers.begin(), solvers.end(), strategy.solver) == solvers.end())
+                    continue;
+                const RigFitOutcome outcome = run_rig_fit(definition, inner_settings(), targets, strategy, {});
+                print_fit_row(outcome, targets);
+                runs.push_back(outcome_json(outcome, definition.mesh.num_elements(), targets));
+                all_converged = all_converged && outcome.result.status == Status::converged;
+            }
+            if (noise == 0.0)
+                faces.emplace_back(definition, targets);
+        }
+    }
+    std::cout << "\n### One outer iteration at θ*\n\n"
+              << "| tets | equilibrium from rest s | equilibrium warm s | factorization + adjoint gradient s | "
+                 "forward sensitivities s | parameters |\n|---|---|---|---|---|---|\n";
+    for (const auto& [definition, targets] : faces)
+        runs.push_back(iteration_cost(definition, targets, definition.mesh.num_elements()));
+    return all_converged;
+}
+
+} // namespace sinew::cli

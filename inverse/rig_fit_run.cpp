@@ -1,0 +1,103 @@
+#include "sinew/inverse/rig_fit_run.hpp"
+
+#include "sinew/solvers/solver.hpp"
+
+#include <Eigen/Geometry>
+
+#include <chrono>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+namespace sinew {
+
+std::vector<RigFitStrategy> rig_fit_strategies(const SolverOptions& base)
+{
+    std::vector<RigFitStrategy> strategies;
+    const auto add = [&](std::string label, std::string solver, OrthogonalityForm form,
+                         std::map<std::string, std::string> backend) {
+        RigFitStrategy s{std::move(label), std::move(solver), form, base};
+        s.options.backend = std::move(backend);
+        strategies.push_back(std::move(s));
+    };
+    add("ipopt (Gauss-Newton)", "ipopt", OrthogonalityForm::constraints, {{"hessian_approximation", "exact"}});
+    add("ipopt (limited-memory)", "ipopt", OrthogonalityForm::constraints, {});
+    add("kkt-newton", "kkt-newton", OrthogonalityForm::constraints, {});
+    add("relaxed-kkt (kappa 1e8)", "relaxed-kkt", OrthogonalityForm::constraints, {{"kappa", "1e8"}});
+    add("augmented-lagrangian", "augmented-lagrangian", OrthogonalityForm::constraints, {});
+    add("nlopt-slsqp", "nlopt-slsqp", OrthogonalityForm::constraints, {});
+    add("penalty (seed)", "projected-newton", OrthogonalityForm::penalty, {});
+    return strategies;
+}
+
+RigTargets synthesize_targets(MuscleRig& rig, const Eigen::Vector3d& hinge, double noise, unsigned seed)
+{
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    std::normal_distribution<double> normal;
+    RigTargets t;
+    t.noise = noise;
+    t.truth = RigParameters::neutral(rig.num_muscles());
+    for (int m = 0; m < rig.num_muscles(); ++m)
+        t.truth.activations[m] = 0.1 + 0.8 * uniform(rng);
+    const double jaw_angle = (5.0 + 10.0 * uniform(rng)) * M_PI / 180.0;
+    const Eigen::Matrix3d R_j = Eigen::AngleAxisd(jaw_angle, Eigen::Vector3d::UnitX()).toRotationMatrix();
+    t.truth.jaw_map = R_j;
+    t.truth.jaw_translation = hinge - R_j * hinge;  // x = R_j (X − h) + h
+    const Eigen::Vector3d axis = Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
+    t.truth.cranium_map = Eigen::AngleAxisd(2.0 * M_PI / 180.0, axis).toRotationMatrix();
+    t.truth.cranium_translation = 0.002 * Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
+
+    const RigEvaluation rest = rig.evaluate(RigParameters::neutral(rig.num_muscles()));
+    if (!rest.ok)
+        throw std::runtime_error("rig targets: " + rest.failure);
+    const Eigen::VectorXd at_rest = rig.landmark_positions();
+    const RigEvaluation moved = rig.evaluate(t.truth);
+    if (!moved.ok)
+        throw std::runtime_error("rig targets: " + moved.failure);
+    t.exact = rig.landmark_positions();
+    t.motion_rms = std::sqrt((t.exact - at_rest).squaredNorm() / rig.num_landmarks());
+    t.targets = t.exact;
+    for (Eigen::Index i = 0; i < t.targets.size(); ++i)
+        t.targets[i] += noise * normal(rng);
+    return t;
+}
+
+RigFitOutcome run_rig_fit(const RigDefinition& definition, const EquilibriumSolveSettings& inner,
+                          const RigTargets& targets, const RigFitStrategy& strategy, const RigFitSettings& settings)
+{
+    MuscleRig rig(definition, inner);
+    RigFitSettings fit_settings = settings;
+    fit_settings.orthogonality = strategy.form;
+    RigFitProblem problem(rig, targets.targets, fit_settings);
+    RigFitOutcome outcome;
+    outcome.strategy = strategy.label;
+    const auto start = std::chrono::steady_clock::now();
+    outcome.result = solve(problem, strategy.solver, strategy.options);
+    outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    outcome.equilibrium_solves = rig.equilibrium_solves();
+    outcome.factorizations = rig.sensitivity_factorizations();
+    outcome.equilibrium_seconds = rig.equilibrium_seconds();
+    outcome.sensitivity_seconds = rig.sensitivity_seconds();
+    const Eigen::VectorXd& theta = outcome.result.x;
+    const RigParameters fitted = RigParameters::unpacked(theta, rig.num_muscles());
+    const RigParameters& truth = targets.truth;
+    outcome.activation_error = (fitted.activations - truth.activations).cwiseAbs().maxCoeff();
+    outcome.map_error = std::max((fitted.cranium_map - truth.cranium_map).cwiseAbs().maxCoeff(),
+                                 (fitted.jaw_map - truth.jaw_map).cwiseAbs().maxCoeff());
+    outcome.translation_error = std::max((fitted.cranium_translation - truth.cranium_translation).cwiseAbs().maxCoeff(),
+                                         (fitted.jaw_translation - truth.jaw_translation).cwiseAbs().maxCoeff());
+    outcome.cranium_violation = problem.cranium_violation(theta);
+    outcome.jaw_violation = problem.jaw_violation(theta);
+    const double landmarks = rig.num_landmarks();
+    if (std::isfinite(problem.objective(theta))) {
+        const Eigen::VectorXd fitted_landmarks = rig.landmark_positions();
+        outcome.rms = std::sqrt((fitted_landmarks - targets.targets).squaredNorm() / landmarks);
+        outcome.rms_to_exact = std::sqrt((fitted_landmarks - targets.exact).squaredNorm() / landmarks);
+    } else {
+        outcome.rms = outcome.rms_to_exact = std::numeric_limits<double>::infinity();
+    }
+    return outcome;
+}
+
+} // namespace sinew

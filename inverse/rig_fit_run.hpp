@@ -1,0 +1,68 @@
+#pragma once
+// Fitting a rig to synthesized targets under each strategy: the runs behind
+// `sinew bench --suite rig` and its tests.
+#include "sinew/inverse/rig_fit_problem.hpp"
+#include "sinew/solvers/result.hpp"
+#include "sinew/solvers/solver_options.hpp"
+
+#include <string>
+#include <vector>
+
+namespace sinew {
+
+/// One way of fitting: a solver on the constrained or the penalty form.
+struct RigFitStrategy {
+    std::string label;  ///< "ipopt", "kkt-newton", "penalty (seed)", …
+    std::string solver;
+    OrthogonalityForm form = OrthogonalityForm::constraints;
+    SolverOptions options;
+};
+
+/// The strategies of the rig suite, each with `base`'s tolerance, limits and
+/// log: Ipopt with the Gauss-Newton Hessian (hessian_approximation=exact) and
+/// in its limited-memory mode; kkt-newton and relaxed-kkt (κ = 1e8) taking
+/// Gauss-Newton steps on the KKT system; augmented-lagrangian;
+/// nlopt-slsqp; and the seed's penalty form by projected Newton (Gauss-Newton
+/// with the activations' bounds).
+std::vector<RigFitStrategy> rig_fit_strategies(const SolverOptions& base);
+
+/// θ* and the landmark targets it gives, with the size of their motion.
+struct RigTargets {
+    RigParameters truth;
+    Eigen::VectorXd exact;    ///< S x̂(θ*)
+    Eigen::VectorXd targets;  ///< exact + noise
+    double motion_rms = 0.0;  ///< RMS over landmarks of |S x̂(θ*) − S X| (m)
+    double noise = 0.0;       ///< standard deviation of the noise per coordinate (m)
+};
+
+/// θ*: activations uniform in [0.1, 0.9], the jaw turned by 5–15° about the
+/// hinge axis (x through `hinge`, opening the mouth), the cranium turned by
+/// 2° about a random axis and moved by 2 mm; targets S x̂(θ*) plus Gaussian
+/// noise of standard deviation `noise` (m) per coordinate. Deterministic in
+/// `seed`. std::runtime_error when the rig cannot be solved at θ*.
+RigTargets synthesize_targets(MuscleRig& rig, const Eigen::Vector3d& hinge, double noise, unsigned seed);
+
+/// What one fit reached.
+struct RigFitOutcome {
+    std::string strategy;
+    Result result;
+    double rms = 0.0;              ///< RMS over landmarks of |S x̂(θ) − targets| (m)
+    double rms_to_exact = 0.0;     ///< the same against the noise-free targets
+    double activation_error = 0.0; ///< max |α − α*|
+    double map_error = 0.0;        ///< max |M − M*| over both maps
+    double translation_error = 0.0;///< max |t − t*| over both (m)
+    double cranium_violation = 0.0;///< ‖M_cᵀM_c − I‖_F
+    double jaw_violation = 0.0;
+    int equilibrium_solves = 0;
+    int factorizations = 0;        ///< sensitivity factorizations
+    double equilibrium_seconds = 0.0;
+    double sensitivity_seconds = 0.0;
+    double seconds = 0.0;
+};
+
+/// Fits a fresh rig of `definition` (so every strategy starts alike: from
+/// the neutral rig, cold) to `targets` with `strategy`.
+RigFitOutcome run_rig_fit(const RigDefinition& definition, const EquilibriumSolveSettings& inner,
+                          const RigTargets& targets, const RigFitStrategy& strategy, const RigFitSettings& settings);
+
+} // namespace sinew
