@@ -3,6 +3,7 @@
 #include "sinew/core/input_error.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace sinew {
@@ -12,16 +13,34 @@ constexpr int kOrthogonalityRows = 6;
 /// ‖MᵀM − I‖²_F = Σ_p w_p c_p² over the 6 pairs i ≤ j (Orthogonality's order).
 constexpr double kFrobeniusWeights[kOrthogonalityRows] = {1.0, 2.0, 2.0, 1.0, 2.0, 1.0};
 
-/// The set's c and its Jacobian as a dense 6 × n matrix.
-void dense_rows(Orthogonality& set, const Eigen::VectorXd& theta, Eigen::VectorXd& c, Eigen::MatrixXd& jacobian)
+/// The penalty form's residuals over both maps, weighted so that the
+/// penalty is ½‖r‖²: r_p = √(k w_p) c_p, and their Jacobian (12 × n, dense).
+struct PenaltyResiduals {
+    Eigen::VectorXd r;
+    Eigen::MatrixXd jacobian;
+};
+
+PenaltyResiduals penalty_residuals(Orthogonality& cranium, Orthogonality& jaw, const Eigen::VectorXd& theta,
+                                   double stiffness)
 {
-    c.resize(kOrthogonalityRows);
-    set.values(theta, c);
-    Eigen::VectorXd values(set.jacobian_pattern().nonzeros());
-    set.jacobian_values(theta, values);
-    jacobian = Eigen::MatrixXd::Zero(kOrthogonalityRows, theta.size());
-    for (int q = 0; q < set.jacobian_pattern().nonzeros(); ++q)
-        jacobian(set.jacobian_pattern().rows[q], set.jacobian_pattern().cols[q]) += values[q];
+    PenaltyResiduals residuals;
+    residuals.r.resize(2 * kOrthogonalityRows);
+    residuals.jacobian = Eigen::MatrixXd::Zero(2 * kOrthogonalityRows, theta.size());
+    int offset = 0;
+    for (Orthogonality* set : {&cranium, &jaw}) {
+        set->values(theta, residuals.r.segment(offset, kOrthogonalityRows));
+        Eigen::VectorXd values(set->jacobian_pattern().nonzeros());
+        set->jacobian_values(theta, values);
+        for (int q = 0; q < set->jacobian_pattern().nonzeros(); ++q)
+            residuals.jacobian(offset + set->jacobian_pattern().rows[q], set->jacobian_pattern().cols[q]) += values[q];
+        for (int p = 0; p < kOrthogonalityRows; ++p) {
+            const double scale = std::sqrt(stiffness * kFrobeniusWeights[p]);
+            residuals.r[offset + p] *= scale;
+            residuals.jacobian.row(offset + p) *= scale;
+        }
+        offset += kOrthogonalityRows;
+    }
+    return residuals;
 }
 
 /// Adds a set's Σλ∇²c into the dense symmetric H (lower-triangle pattern mirrored).
@@ -127,14 +146,8 @@ double RigFitProblem::penalty(ConstVectorRef theta)
 {
     if (settings_.orthogonality != OrthogonalityForm::penalty)
         return 0.0;
-    double sum = 0.0;
-    Eigen::VectorXd c(kOrthogonalityRows);
-    for (Orthogonality* set : {&cranium_, &jaw_}) {
-        set->values(theta, c);
-        for (int p = 0; p < kOrthogonalityRows; ++p)
-            sum += kFrobeniusWeights[p] * c[p] * c[p];
-    }
-    return 0.5 * penalty_stiffness_ * sum;  // k/2 (‖M_cᵀM_c − I‖²_F + ‖M_jᵀM_j − I‖²_F)
+    // k/2 (‖M_cᵀM_c − I‖²_F + ‖M_jᵀM_j − I‖²_F) = ½‖r‖².
+    return 0.5 * penalty_residuals(cranium_, jaw_, theta, penalty_stiffness_).r.squaredNorm();
 }
 
 double RigFitProblem::objective(ConstVectorRef theta)
@@ -152,13 +165,8 @@ void RigFitProblem::gradient(ConstVectorRef theta, VectorRef grad)
     grad = rig_.landmark_gradient(r);  // Jᵀr by the adjoint
     grad.head(rig_.num_muscles()) += settings_.tikhonov * theta.head(rig_.num_muscles());
     if (settings_.orthogonality == OrthogonalityForm::penalty) {
-        Eigen::VectorXd c;
-        Eigen::MatrixXd jacobian;
-        for (Orthogonality* set : {&cranium_, &jaw_}) {
-            dense_rows(*set, theta, c, jacobian);
-            for (int p = 0; p < kOrthogonalityRows; ++p)
-                grad += penalty_stiffness_ * kFrobeniusWeights[p] * c[p] * jacobian.row(p).transpose();
-        }
+        const PenaltyResiduals penalty = penalty_residuals(cranium_, jaw_, theta, penalty_stiffness_);
+        grad += penalty.jacobian.transpose() * penalty.r;
     }
 }
 
@@ -199,13 +207,8 @@ void RigFitProblem::fill_hessian(ConstVectorRef theta, double sigma, ConstVector
     Eigen::MatrixXd H = landmark_jacobian_.transpose() * landmark_jacobian_;
     H.diagonal().head(m).array() += settings_.tikhonov;
     if (settings_.orthogonality == OrthogonalityForm::penalty) {
-        Eigen::VectorXd c;
-        Eigen::MatrixXd jacobian;
-        for (Orthogonality* set : {&cranium_, &jaw_}) {
-            dense_rows(*set, theta, c, jacobian);
-            for (int p = 0; p < kOrthogonalityRows; ++p)
-                H += penalty_stiffness_ * kFrobeniusWeights[p] * jacobian.row(p).transpose() * jacobian.row(p);
-        }
+        const PenaltyResiduals penalty = penalty_residuals(cranium_, jaw_, theta, penalty_stiffness_);
+        H += penalty.jacobian.transpose() * penalty.jacobian;
     }
     H *= sigma;
     if (num_constraints() > 0) {
