@@ -13,32 +13,39 @@ constexpr int kOrthogonalityRows = 6;
 /// ‖MᵀM − I‖²_F = Σ_p w_p c_p² over the 6 pairs i ≤ j (Orthogonality's order).
 constexpr double kFrobeniusWeights[kOrthogonalityRows] = {1.0, 2.0, 2.0, 1.0, 2.0, 1.0};
 
-/// The penalty form's residuals over both maps, weighted so that the
-/// penalty is ½‖r‖²: r_p = √(k w_p) c_p, and their Jacobian (12 × n, dense).
-struct PenaltyResiduals {
-    Eigen::VectorXd r;
+/// The constraints c(θ) of both maps (12) and their dense Jacobian (12 × n).
+struct OrthogonalityRows {
+    Eigen::VectorXd c;
     Eigen::MatrixXd jacobian;
 };
 
-PenaltyResiduals penalty_residuals(Orthogonality& cranium, Orthogonality& jaw, const Eigen::VectorXd& theta,
-                                   double stiffness)
+OrthogonalityRows orthogonality_rows(Orthogonality& cranium, Orthogonality& jaw, const Eigen::VectorXd& theta)
 {
-    PenaltyResiduals residuals;
-    residuals.r.resize(2 * kOrthogonalityRows);
-    residuals.jacobian = Eigen::MatrixXd::Zero(2 * kOrthogonalityRows, theta.size());
+    OrthogonalityRows rows;
+    rows.c.resize(2 * kOrthogonalityRows);
+    rows.jacobian = Eigen::MatrixXd::Zero(2 * kOrthogonalityRows, theta.size());
     int offset = 0;
     for (Orthogonality* set : {&cranium, &jaw}) {
-        set->values(theta, residuals.r.segment(offset, kOrthogonalityRows));
+        set->values(theta, rows.c.segment(offset, kOrthogonalityRows));
         Eigen::VectorXd values(set->jacobian_pattern().nonzeros());
         set->jacobian_values(theta, values);
         for (int q = 0; q < set->jacobian_pattern().nonzeros(); ++q)
-            residuals.jacobian(offset + set->jacobian_pattern().rows[q], set->jacobian_pattern().cols[q]) += values[q];
-        for (int p = 0; p < kOrthogonalityRows; ++p) {
-            const double scale = std::sqrt(stiffness * kFrobeniusWeights[p]);
-            residuals.r[offset + p] *= scale;
-            residuals.jacobian.row(offset + p) *= scale;
-        }
+            rows.jacobian(offset + set->jacobian_pattern().rows[q], set->jacobian_pattern().cols[q]) += values[q];
         offset += kOrthogonalityRows;
+    }
+    return rows;
+}
+
+/// The penalty form's residuals over both maps, weighted so that the
+/// penalty is ½‖r‖²: r_p = √(k w_p) c_p, and their Jacobian (12 × n, dense).
+OrthogonalityRows penalty_residuals(Orthogonality& cranium, Orthogonality& jaw, const Eigen::VectorXd& theta,
+                                    double stiffness)
+{
+    OrthogonalityRows residuals = orthogonality_rows(cranium, jaw, theta);
+    for (int p = 0; p < 2 * kOrthogonalityRows; ++p) {
+        const double scale = std::sqrt(stiffness * kFrobeniusWeights[p % kOrthogonalityRows]);
+        residuals.c[p] *= scale;
+        residuals.jacobian.row(p) *= scale;
     }
     return residuals;
 }
@@ -142,12 +149,27 @@ Eigen::VectorXd RigFitProblem::residual(ConstVectorRef theta)
     return rig_.landmark_positions() - targets_;  // S x̂(θ) − x*
 }
 
+const Eigen::MatrixXd& RigFitProblem::landmark_jacobian(ConstVectorRef theta)
+{
+    require(theta);
+    if (!landmark_jacobian_at_ || *landmark_jacobian_at_ != theta) {
+        landmark_jacobian_ = rig_.landmark_jacobian();
+        landmark_jacobian_at_ = theta;
+    }
+    return landmark_jacobian_;
+}
+
+Eigen::MatrixXd RigFitProblem::orthogonality_jacobian(ConstVectorRef theta)
+{
+    return orthogonality_rows(cranium_, jaw_, theta).jacobian;
+}
+
 double RigFitProblem::penalty(ConstVectorRef theta)
 {
     if (settings_.orthogonality != OrthogonalityForm::penalty)
         return 0.0;
     // k/2 (‖M_cᵀM_c − I‖²_F + ‖M_jᵀM_j − I‖²_F) = ½‖r‖².
-    return 0.5 * penalty_residuals(cranium_, jaw_, theta, penalty_stiffness_).r.squaredNorm();
+    return 0.5 * penalty_residuals(cranium_, jaw_, theta, penalty_stiffness_).c.squaredNorm();
 }
 
 double RigFitProblem::objective(ConstVectorRef theta)
@@ -165,8 +187,8 @@ void RigFitProblem::gradient(ConstVectorRef theta, VectorRef grad)
     grad = rig_.landmark_gradient(r);  // Jᵀr by the adjoint
     grad.head(rig_.num_muscles()) += settings_.tikhonov * theta.head(rig_.num_muscles());
     if (settings_.orthogonality == OrthogonalityForm::penalty) {
-        const PenaltyResiduals penalty = penalty_residuals(cranium_, jaw_, theta, penalty_stiffness_);
-        grad += penalty.jacobian.transpose() * penalty.r;
+        const OrthogonalityRows penalty = penalty_residuals(cranium_, jaw_, theta, penalty_stiffness_);
+        grad += penalty.jacobian.transpose() * penalty.c;
     }
 }
 
@@ -197,17 +219,13 @@ void RigFitProblem::projected_hessian_values(ConstVectorRef theta, double sigma,
 void RigFitProblem::fill_hessian(ConstVectorRef theta, double sigma, ConstVectorRef lambda, Projection projection,
                                  VectorRef values)
 {
-    require(theta);
-    if (!landmark_jacobian_at_ || *landmark_jacobian_at_ != theta) {
-        landmark_jacobian_ = rig_.landmark_jacobian();
-        landmark_jacobian_at_ = theta;
-    }
+    const Eigen::MatrixXd& J = landmark_jacobian(theta);
     const int n = num_variables(), m = rig_.num_muscles();
     // Gauss-Newton: JᵀJ + τ I_α (+ k J_Rᵀ W J_R), then Σλ∇²c exactly.
-    Eigen::MatrixXd H = landmark_jacobian_.transpose() * landmark_jacobian_;
+    Eigen::MatrixXd H = J.transpose() * J;
     H.diagonal().head(m).array() += settings_.tikhonov;
     if (settings_.orthogonality == OrthogonalityForm::penalty) {
-        const PenaltyResiduals penalty = penalty_residuals(cranium_, jaw_, theta, penalty_stiffness_);
+        const OrthogonalityRows penalty = penalty_residuals(cranium_, jaw_, theta, penalty_stiffness_);
         H += penalty.jacobian.transpose() * penalty.jacobian;
     }
     H *= sigma;

@@ -72,7 +72,13 @@ public:
     /// Landmark residual S x̂(θ) − x* (evaluating θ; InputError-free: throws
     /// std::runtime_error where the inner solve fails).
     Eigen::VectorXd residual(ConstVectorRef theta);
+    /// J = ∂(S x̂)/∂θ at θ (forward sensitivities, kept for the last θ).
+    /// std::runtime_error where the inner solve fails.
+    const Eigen::MatrixXd& landmark_jacobian(ConstVectorRef theta);
+    /// ∂c/∂θ of M_cᵀM_c − I and M_jᵀM_j − I (12 × n, dense) in either form.
+    Eigen::MatrixXd orthogonality_jacobian(ConstVectorRef theta);
     const MuscleRig& rig() const { return rig_; }
+    const RigFitSettings& settings() const { return settings_; }
 
 protected:
     void hessian_values(ConstVectorRef theta, double sigma, ConstVectorRef lambda, VectorRef values) override;

@@ -1,5 +1,6 @@
 #include "sinew/inverse/rig_fit_run.hpp"
 
+#include "sinew/inverse/rig_identifiability.hpp"
 #include "sinew/solvers/solver.hpp"
 
 #include <Eigen/Geometry>
@@ -63,6 +64,36 @@ RigTargets synthesize_targets(MuscleRig& rig, const Eigen::Vector3d& hinge, doub
     return t;
 }
 
+namespace {
+
+/// The fit by the strategy's solver, unless the landmarks do not determine
+/// the parameters at the start (or the rig cannot be solved there): then a
+/// failed result at the start that says why, and no solve.
+Result fit(RigFitProblem& problem, const RigFitStrategy& strategy)
+{
+    const Eigen::VectorXd theta = problem.starting_point();
+    std::string refusal;
+    if (!std::isfinite(problem.objective(theta))) {
+        refusal = "rig fit: the equilibrium solve fails at the starting parameters";
+    } else {
+        const RigIdentifiability identifiability = rig_identifiability(problem, theta);
+        if (!identifiability.determined())
+            refusal = "rig fit: " + identifiability.message;
+    }
+    if (refusal.empty())
+        return solve(problem, strategy.solver, strategy.options);
+    Result result;
+    result.solver = strategy.solver;
+    result.problem = problem.name();
+    result.status = Status::failed;
+    result.message = refusal;
+    result.x = theta;
+    result.objective = problem.objective(theta);
+    return result;
+}
+
+} // namespace
+
 RigFitOutcome run_rig_fit(const RigDefinition& definition, const EquilibriumSolveSettings& inner,
                           const RigTargets& targets, const RigFitStrategy& strategy, const RigFitSettings& settings)
 {
@@ -73,7 +104,7 @@ RigFitOutcome run_rig_fit(const RigDefinition& definition, const EquilibriumSolv
     RigFitOutcome outcome;
     outcome.strategy = strategy.label;
     const auto start = std::chrono::steady_clock::now();
-    outcome.result = solve(problem, strategy.solver, strategy.options);
+    outcome.result = fit(problem, strategy);
     outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     outcome.equilibrium_solves = rig.equilibrium_solves();
     outcome.factorizations = rig.sensitivity_factorizations();

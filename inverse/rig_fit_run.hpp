@@ -61,7 +61,10 @@ struct RigFitOutcome {
 };
 
 /// Fits a fresh rig of `definition` (so every strategy starts alike: from
-/// the neutral rig, cold) to `targets` with `strategy`.
+/// the neutral rig, cold) to `targets` with `strategy`. Where the landmarks
+/// do not determine the parameters at the start (rig_identifiability), the
+/// result is `failed` at the start, its message naming the undetermined
+/// parameters, and nothing is solved.
 RigFitOutcome run_rig_fit(const RigDefinition& definition, const EquilibriumSolveSettings& inner,
                           const RigTargets& targets, const RigFitStrategy& strategy, const RigFitSettings& settings);
 

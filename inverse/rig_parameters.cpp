@@ -57,4 +57,17 @@ RigParameters RigParameters::neutral(int muscles)
     return parameters;
 }
 
+std::string rig_parameter_name(int index, const std::vector<std::string>& muscle_names)
+{
+    const int muscles = static_cast<int>(muscle_names.size());
+    if (index < muscles)
+        return "activation of " + muscle_names[index];
+    const int affine = index - muscles;
+    const std::string bone = affine < RigParameters::kAffineParameters ? "c" : "j";
+    const int entry = affine % RigParameters::kAffineParameters;
+    if (entry < 9)
+        return "M_" + bone + "(" + std::to_string(entry / 3) + "," + std::to_string(entry % 3) + ")";
+    return "t_" + bone + "(" + std::to_string(entry - 9) + ")";
+}
+
 } // namespace sinew

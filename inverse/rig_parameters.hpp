@@ -2,6 +2,9 @@
 // The parameters θ of a muscle-driven facial rig (seed 000 §2).
 #include <Eigen/Core>
 
+#include <string>
+#include <vector>
+
 namespace sinew {
 
 /// θ = (θ_a, θ_k): one activation per muscle (§2.1), then the cranium's
@@ -31,5 +34,9 @@ struct RigParameters {
     /// Activations 0, both maps the identity, no translation: the rest rig.
     static RigParameters neutral(int muscles);
 };
+
+/// The name of packed entry `index`: "activation of <muscle>", "M_c(0,1)",
+/// "t_j(2)", … (messages and tables).
+std::string rig_parameter_name(int index, const std::vector<std::string>& muscle_names);
 
 } // namespace sinew
