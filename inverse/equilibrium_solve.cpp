@@ -27,8 +27,13 @@ EquilibriumSolve solve_equilibrium(QuasistaticProblem& problem, const Equilibriu
     const double given = gradient_norm(problem, problem.starting_point());
     const double scale = std::max({std::isfinite(cold) ? cold : 0.0, given, settings.force_scale});
     SolverOptions options = settings.options;
-    if (scale > 0.0 && options.backend.count("gradient_target") == 0)  // unless the caller set it
-        options.backend["gradient_target"] = format_number(options.tolerance * scale);
+    if (scale > 0.0 && options.backend.count("gradient_target") == 0) {  // unless the caller set it
+        const double target = options.tolerance * scale;
+        options.backend["gradient_target"] = format_number(target);
+        // solve() checks ‖∇_U E‖∞ ≤ kkt_tol · max(1, ‖∇_U E‖∞) afterwards: the
+        // same quantity, so it must not ask for less than the target does.
+        options.kkt_tolerance = std::max(options.kkt_tolerance, target);
+    }
     EquilibriumSolve outcome;
     outcome.result = solve(problem, kInnerSolver, options);
     outcome.converged = outcome.result.status == Status::converged;

@@ -38,7 +38,9 @@ struct EquilibriumSolve {
 /// force_scale), the cold start being the rest positions with the prescribed
 /// values: the same test whatever the warm start (unless force_scale and the
 /// cold start's gradient are both below the given start's), so that x(θ)
-/// does not depend on the outer solver's path.
+/// does not depend on the outer solver's path. `options.kkt_tolerance` is
+/// raised to that target where it is below it: both bound ‖∇_U E‖∞, and a
+/// warm start a tiny step away stops after one Newton step between the two.
 /// A solve that does not converge is a failed evaluation, reported in
 /// `failure`, never an equilibrium to differentiate. InputError for invalid
 /// settings.

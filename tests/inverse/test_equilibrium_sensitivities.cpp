@@ -87,6 +87,27 @@ TEST_CASE("rig: an evaluation at the last theta is not repeated, a new theta war
     CHECK(warm.inner.iterations <= 4);
 }
 
+TEST_CASE("rig: a re-solve a tiny parameter step away is accepted on the force-scaled test",
+          "[inverse][rig]")
+{
+    // The outer solvers' last steps change θ by ~1e-7: one Newton step from the
+    // warm start then meets tol × force scale, which the result's KKT check
+    // (kkt_tol, here far below it) must not overrule.
+    EquilibriumSolveSettings settings = tight_settings();
+    settings.options.tolerance = 1e-6;
+    settings.options.kkt_tolerance = 1e-14;
+    MuscleRig rig(slab_rig(), settings);
+    RigParameters theta = moved_parameters(5.0);
+    for (int step = 0; step < 4; ++step) {
+        CAPTURE(step);
+        const RigEvaluation evaluation = rig.evaluate(theta);
+        CAPTURE(evaluation.failure);
+        CHECK(evaluation.ok);
+        theta.activations[step % 2] += 1e-7;
+        theta.jaw_translation[1] += 1e-10;
+    }
+}
+
 TEST_CASE("rig: bad parameters are refused and a failed inner solve is a failed evaluation", "[inverse][rig][errors]")
 {
     MuscleRig rig(slab_rig(), tight_settings());
