@@ -69,7 +69,15 @@ void add_constraint_curvature(Orthogonality& set, const Eigen::VectorXd& theta, 
 
 std::string to_string(OrthogonalityForm form)
 {
-    return form == OrthogonalityForm::constraints ? "constraints" : "penalty";
+    switch (form) {
+    case OrthogonalityForm::constraints:
+        return "constraints";
+    case OrthogonalityForm::penalty:
+        return "penalty";
+    case OrthogonalityForm::rotation_vectors:
+        break;
+    }
+    return "rotation vectors";
 }
 
 RigFitProblem::RigFitProblem(MuscleRig& rig, Eigen::VectorXd targets, RigFitSettings settings,
@@ -91,6 +99,8 @@ RigFitProblem::RigFitProblem(MuscleRig& rig, Eigen::VectorXd targets, RigFitSett
         throw InputError("rig fit: the Tikhonov weight must be finite and >= 0");
     if (!(settings_.penalty_weight > 0.0) || !std::isfinite(settings_.penalty_weight))
         throw InputError("rig fit: the penalty weight must be finite and > 0");
+    if (settings_.orthogonality == OrthogonalityForm::rotation_vectors)
+        throw InputError("rig fit: the rotation-vector form is RotationVectorFitProblem's, not RigFitProblem's");
     start_ = (start ? *start : RigParameters::neutral(rig.num_muscles())).packed();
     if (start_.size() != rig.num_parameters())
         throw InputError("rig fit: the starting parameters have " + std::to_string(start_.size()) +

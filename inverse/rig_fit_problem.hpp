@@ -16,6 +16,9 @@ enum class OrthogonalityForm {
     /// The seed's form (§2.2–2.3): extra energy terms k/2 ‖MᵀM − I‖²_F for both
     /// maps, no constraints; the violation it leaves is reported as it is.
     penalty,
+    /// M = R(ω): rotations by construction, nothing to constrain; fitted by
+    /// RotationVectorFitProblem (RigFitProblem refuses it).
+    rotation_vectors,
 };
 std::string to_string(OrthogonalityForm form);
 
@@ -46,7 +49,8 @@ struct RigFitSettings {
 class RigFitProblem final : public Nlp {
 public:
     /// `targets`: 3 per landmark (m). InputError for targets of the wrong size
-    /// or not finite, a negative τ or a non-positive penalty weight.
+    /// or not finite, a negative τ, a non-positive penalty weight or the
+    /// rotation_vectors form.
     RigFitProblem(MuscleRig& rig, Eigen::VectorXd targets, RigFitSettings settings,
                   std::optional<RigParameters> start = std::nullopt);
 

@@ -1,11 +1,14 @@
 #include "sinew/inverse/rig_fit_run.hpp"
 
 #include "sinew/inverse/rig_identifiability.hpp"
+#include "sinew/inverse/rotation_vector_fit_problem.hpp"
 #include "sinew/solvers/solver.hpp"
 
 #include <Eigen/Geometry>
 
 #include <chrono>
+#include <functional>
+#include <memory>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -28,6 +31,7 @@ std::vector<RigFitStrategy> rig_fit_strategies(const SolverOptions& base)
     add("augmented-lagrangian", "augmented-lagrangian", OrthogonalityForm::constraints, {});
     add("nlopt-slsqp", "nlopt-slsqp", OrthogonalityForm::constraints, {});
     add("penalty (seed)", "projected-newton", OrthogonalityForm::penalty, {});
+    add("rotation vectors", "projected-newton", OrthogonalityForm::rotation_vectors, {});
     return strategies;
 }
 
@@ -66,29 +70,33 @@ RigTargets synthesize_targets(MuscleRig& rig, const Eigen::Vector3d& hinge, doub
 
 namespace {
 
-/// The fit by the strategy's solver, unless the landmarks do not determine
-/// the parameters at the start (or the rig cannot be solved there): then a
-/// failed result at the start that says why, and no solve.
-Result fit(RigFitProblem& problem, const RigFitStrategy& strategy)
+/// The fit of `nlp` (on θ, or on rotation vectors φ with θ(φ) from
+/// `affine_parameters`) by the strategy's solver, unless the landmarks do
+/// not determine the parameters at the start (or the rig cannot be solved
+/// there): then a failed result at the start that says why, and no solve.
+Result fit(Nlp& nlp, RigFitProblem& affine,
+           const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& affine_parameters,
+           const RigFitStrategy& strategy)
 {
-    const Eigen::VectorXd theta = problem.starting_point();
+    const Eigen::VectorXd start = nlp.starting_point();
+    const Eigen::VectorXd theta = affine_parameters(start);
     std::string refusal;
-    if (!std::isfinite(problem.objective(theta))) {
+    if (!std::isfinite(affine.objective(theta))) {
         refusal = "rig fit: the equilibrium solve fails at the starting parameters";
     } else {
-        const RigIdentifiability identifiability = rig_identifiability(problem, theta);
+        const RigIdentifiability identifiability = rig_identifiability(affine, theta);
         if (!identifiability.determined())
             refusal = "rig fit: " + identifiability.message;
     }
     if (refusal.empty())
-        return solve(problem, strategy.solver, strategy.options);
+        return solve(nlp, strategy.solver, strategy.options);
     Result result;
     result.solver = strategy.solver;
-    result.problem = problem.name();
+    result.problem = nlp.name();
     result.status = Status::failed;
     result.message = refusal;
-    result.x = theta;
-    result.objective = problem.objective(theta);
+    result.x = start;
+    result.objective = nlp.objective(start);
     return result;
 }
 
@@ -100,17 +108,29 @@ RigFitOutcome run_rig_fit(const RigDefinition& definition, const EquilibriumSolv
     MuscleRig rig(definition, inner);
     RigFitSettings fit_settings = settings;
     fit_settings.orthogonality = strategy.form;
-    RigFitProblem problem(rig, targets.targets, fit_settings);
+    // The rotation-vector form fits φ through a RigFitProblem on θ(φ); the
+    // others fit θ directly. Errors and violations are measured on θ.
+    std::unique_ptr<RotationVectorFitProblem> rotations;
+    std::unique_ptr<RigFitProblem> direct;
+    if (strategy.form == OrthogonalityForm::rotation_vectors)
+        rotations = std::make_unique<RotationVectorFitProblem>(rig, targets.targets, fit_settings);
+    else
+        direct = std::make_unique<RigFitProblem>(rig, targets.targets, fit_settings);
+    Nlp& nlp = rotations ? static_cast<Nlp&>(*rotations) : *direct;
+    RigFitProblem& problem = rotations ? rotations->affine_problem() : *direct;
+    const auto affine_parameters = [&](const Eigen::VectorXd& x) -> Eigen::VectorXd {
+        return rotations ? rotations->affine_parameters(x) : x;
+    };
     RigFitOutcome outcome;
     outcome.strategy = strategy.label;
     const auto start = std::chrono::steady_clock::now();
-    outcome.result = fit(problem, strategy);
+    outcome.result = fit(nlp, problem, affine_parameters, strategy);
     outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     outcome.equilibrium_solves = rig.equilibrium_solves();
     outcome.factorizations = rig.sensitivity_factorizations();
     outcome.equilibrium_seconds = rig.equilibrium_seconds();
     outcome.sensitivity_seconds = rig.sensitivity_seconds();
-    const Eigen::VectorXd& theta = outcome.result.x;
+    const Eigen::VectorXd theta = affine_parameters(outcome.result.x);
     const RigParameters fitted = RigParameters::unpacked(theta, rig.num_muscles());
     const RigParameters& truth = targets.truth;
     outcome.activation_error = (fitted.activations - truth.activations).cwiseAbs().maxCoeff();

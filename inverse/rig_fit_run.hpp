@@ -22,8 +22,9 @@ struct RigFitStrategy {
 /// log: Ipopt with the Gauss-Newton Hessian (hessian_approximation=exact) and
 /// in its limited-memory mode; kkt-newton and relaxed-kkt (κ = 1e8) taking
 /// Gauss-Newton steps on the KKT system; augmented-lagrangian;
-/// nlopt-slsqp; and the seed's penalty form by projected Newton (Gauss-Newton
-/// with the activations' bounds).
+/// nlopt-slsqp; the seed's penalty form by projected Newton (Gauss-Newton
+/// with the activations' bounds); and the rotation-vector form (no
+/// constraints) by projected Newton.
 std::vector<RigFitStrategy> rig_fit_strategies(const SolverOptions& base);
 
 /// θ* and the landmark targets it gives, with the size of their motion.
