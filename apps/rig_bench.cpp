@@ -1,7 +1,6 @@
 #include "rig_bench.hpp"
 
 #include "sinew/core/format_number.hpp"
-#include "sinew/inverse/face_rig.hpp"
 #include "sinew/inverse/rig_fit_run.hpp"
 #include "sinew/runs/result_json.hpp"
 
@@ -14,16 +13,6 @@ namespace sinew::cli {
 namespace {
 
 constexpr double kNoise = 1e-3;  // m
-constexpr unsigned kSeed = 1;
-
-EquilibriumSolveSettings inner_settings()
-{
-    EquilibriumSolveSettings inner;
-    inner.options.tolerance = 1e-10;
-    inner.options.kkt_tolerance = 1e-8;
-    inner.options.max_iterations = 100;
-    return inner;
-}
 
 std::string cell(const char* pattern, double value)
 {
@@ -87,9 +76,10 @@ double seconds_since(std::chrono::steady_clock::time_point start)
 /// from rest and again warm from a nearby θ, the factorization, the forward
 /// Jacobian (a solve per parameter that moves the equilibrium) and the
 /// adjoint gradient (one solve).
-nlohmann::json iteration_cost(const RigDefinition& definition, const RigTargets& targets, int tets)
+nlohmann::json iteration_cost(const RigFitCase& fit_case, int tets)
 {
-    MuscleRig rig(definition, inner_settings());
+    const RigTargets& targets = fit_case.targets;
+    MuscleRig rig(fit_case.definition, fit_case.inner);
     RigParameters near = targets.truth;
     near.activations = (near.activations.array() + 0.01).min(1.0);
     auto start = std::chrono::steady_clock::now();
@@ -125,33 +115,32 @@ bool run_rig_bench(const std::vector<int>& sizes, const std::vector<std::string>
                    const SolverOptions& options, nlohmann::json& runs)
 {
     bool all_converged = true;
-    std::vector<std::pair<RigDefinition, RigTargets>> faces;
+    std::vector<RigFitCase> exact_cases;
     for (const int tets : sizes) {
-        FaceShape shape;
-        shape.target_tets = tets;
-        const FaceMesh face = generate_face(shape);
-        RigDefinition definition = face_rig(face);
         for (const double noise : {0.0, kNoise}) {
-            MuscleRig rig(definition, inner_settings());
-            const RigTargets targets = synthesize_targets(rig, face.hinge_point, noise, kSeed);
-            print_fit_header(definition.mesh.num_elements(), definition.mesh.num_nodes(), rig.num_parameters(), targets);
+            RigFitCase fit_case = face_fit_case(tets, noise);
+            const RigDefinition& definition = fit_case.definition;
+            const RigTargets& targets = fit_case.targets;
+            print_fit_header(definition.mesh.num_elements(), definition.mesh.num_nodes(),
+                             static_cast<int>(definition.muscle_elements.size()) + 2 * RigParameters::kAffineParameters,
+                             targets);
             for (const RigFitStrategy& strategy : rig_fit_strategies(options)) {
                 if (!solvers.empty() && std::find(solvers.begin(), solvers.end(), strategy.solver) == solvers.end())
                     continue;
-                const RigFitOutcome outcome = run_rig_fit(definition, inner_settings(), targets, strategy, {});
+                const RigFitOutcome outcome = run_rig_fit(definition, fit_case.inner, targets, strategy, {});
                 print_fit_row(outcome, targets);
                 runs.push_back(outcome_json(outcome, definition.mesh.num_elements(), targets));
                 all_converged = all_converged && outcome.result.status == Status::converged;
             }
             if (noise == 0.0)
-                faces.emplace_back(definition, targets);
+                exact_cases.push_back(std::move(fit_case));
         }
     }
     std::cout << "\n### One outer iteration at θ*\n\n"
               << "| tets | equilibrium from rest s | equilibrium warm s | factorization + adjoint gradient s | "
                  "forward sensitivities s | parameters |\n|---|---|---|---|---|---|\n";
-    for (const auto& [definition, targets] : faces)
-        runs.push_back(iteration_cost(definition, targets, definition.mesh.num_elements()));
+    for (const RigFitCase& fit_case : exact_cases)
+        runs.push_back(iteration_cost(fit_case, fit_case.definition.mesh.num_elements()));
     return all_converged;
 }
 

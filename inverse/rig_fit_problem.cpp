@@ -80,6 +80,23 @@ std::string to_string(OrthogonalityForm form)
     return "rotation vectors";
 }
 
+OrthogonalityForm orthogonality_form(const std::string& name)
+{
+    for (const OrthogonalityForm form :
+         {OrthogonalityForm::constraints, OrthogonalityForm::penalty, OrthogonalityForm::rotation_vectors})
+        if (to_string(form) == name)
+            return form;
+    throw InputError("rig fit: unknown orthogonality form '" + name +
+                     "' (constraints, penalty or rotation vectors)");
+}
+
+RigFitProblem::RigFitProblem(std::shared_ptr<MuscleRig> rig, Eigen::VectorXd targets, RigFitSettings settings,
+                             std::optional<RigParameters> start)
+    : RigFitProblem(*rig, std::move(targets), settings, std::move(start))
+{
+    owned_rig_ = std::move(rig);
+}
+
 RigFitProblem::RigFitProblem(MuscleRig& rig, Eigen::VectorXd targets, RigFitSettings settings,
                              std::optional<RigParameters> start)
     : rig_(rig),

@@ -4,6 +4,7 @@
 #include "sinew/inverse/muscle_rig.hpp"
 #include "sinew/problems/nlp.hpp"
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -21,6 +22,8 @@ enum class OrthogonalityForm {
     rotation_vectors,
 };
 std::string to_string(OrthogonalityForm form);
+/// The form to_string() names; InputError for any other text.
+OrthogonalityForm orthogonality_form(const std::string& name);
 
 struct RigFitSettings {
     OrthogonalityForm orthogonality = OrthogonalityForm::constraints;
@@ -52,6 +55,9 @@ public:
     /// or not finite, a negative τ, a non-positive penalty weight or the
     /// rotation_vectors form.
     RigFitProblem(MuscleRig& rig, Eigen::VectorXd targets, RigFitSettings settings,
+                  std::optional<RigParameters> start = std::nullopt);
+    /// The same, owning the rig (a problem handed on as an Nlp alone).
+    RigFitProblem(std::shared_ptr<MuscleRig> rig, Eigen::VectorXd targets, RigFitSettings settings,
                   std::optional<RigParameters> start = std::nullopt);
 
     std::string name() const override { return "rig fit (" + to_string(settings_.orthogonality) + ")"; }
@@ -97,6 +103,7 @@ private:
     void fill_hessian(ConstVectorRef theta, double sigma, ConstVectorRef lambda, Projection projection,
                       VectorRef values);
 
+    std::shared_ptr<MuscleRig> owned_rig_;  ///< null unless the problem owns its rig
     MuscleRig& rig_;
     Eigen::VectorXd targets_;
     RigFitSettings settings_;

@@ -143,12 +143,28 @@ RigFitOutcome run_rig_fit(const RigDefinition& definition, const EquilibriumSolv
     const double landmarks = rig.num_landmarks();
     if (std::isfinite(problem.objective(theta))) {
         const Eigen::VectorXd fitted_landmarks = rig.landmark_positions();
+        outcome.landmarks = fitted_landmarks;
         outcome.rms = std::sqrt((fitted_landmarks - targets.targets).squaredNorm() / landmarks);
         outcome.rms_to_exact = std::sqrt((fitted_landmarks - targets.exact).squaredNorm() / landmarks);
     } else {
         outcome.rms = outcome.rms_to_exact = std::numeric_limits<double>::infinity();
     }
     return outcome;
+}
+
+RigFitCase face_fit_case(int tets, double noise)
+{
+    FaceShape shape;
+    shape.target_tets = tets;
+    const FaceMesh face = generate_face(shape);
+    RigFitCase fit_case;
+    fit_case.definition = face_rig(face);
+    fit_case.inner.options.tolerance = 1e-10;
+    fit_case.inner.options.kkt_tolerance = 1e-8;
+    fit_case.inner.options.max_iterations = 100;
+    MuscleRig rig(fit_case.definition, fit_case.inner);
+    fit_case.targets = synthesize_targets(rig, face.hinge_point, noise, 1);
+    return fit_case;
 }
 
 } // namespace sinew

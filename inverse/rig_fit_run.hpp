@@ -1,6 +1,7 @@
 #pragma once
 // Fitting a rig to synthesized targets under each strategy: the runs behind
 // `sinew bench --suite rig` and its tests.
+#include "sinew/inverse/face_rig.hpp"
 #include "sinew/inverse/rig_fit_problem.hpp"
 #include "sinew/solvers/result.hpp"
 #include "sinew/solvers/solver_options.hpp"
@@ -59,7 +60,23 @@ struct RigFitOutcome {
     double equilibrium_seconds = 0.0;
     double sensitivity_seconds = 0.0;
     double seconds = 0.0;
+    Eigen::VectorXd landmarks;     ///< S x̂(θ) at the end (3 per landmark); empty where the rig fails there
 };
+
+/// A fitting case on a generated face: its rig, the inner solves' settings
+/// and targets synthesized with seed 1.
+struct RigFitCase {
+    RigDefinition definition;
+    EquilibriumSolveSettings inner;
+    RigTargets targets;
+};
+
+/// The face of about `tets` tets (generate_face, face_rig), inner solves to
+/// 1e-10 of the force scale (at most 100 Newton iterations), targets from
+/// synthesize_targets with `noise` (m) and seed 1: the case of `sinew bench
+/// --suite rig` and `sinew compare face-rig`. InputError for a size
+/// generate_face refuses.
+RigFitCase face_fit_case(int tets, double noise);
 
 /// Fits a fresh rig of `definition` (so every strategy starts alike: from
 /// the neutral rig, cold) to `targets` with `strategy`. Where the landmarks

@@ -1,4 +1,5 @@
 #pragma once
+#include "sinew/inverse/rig_fit_run.hpp"
 #include "sinew/problems/builtin_problems.hpp"
 #include "sinew/problems/quasistatic/scene.hpp"
 #include "sinew/runs/scene_runner.hpp"
@@ -18,5 +19,14 @@ ComparisonSubject scene_subject(const std::function<Scene()>& make_scene, const 
 /// A built-in problem: a scene through scene_subject, any other NLP solved
 /// directly (its positions are x).
 ComparisonSubject builtin_subject(const BuiltinProblem& problem, const SceneRunRequest& request = {});
+
+/// A rig fit (rig_fit_run.hpp): make_nlp() is the fit with orthogonality
+/// constraints, which every solver that takes equalities and bounds runs;
+/// the variants are Ipopt with the Gauss-Newton Hessian
+/// (hessian_approximation=exact), and the seed's penalty form and the
+/// rotation-vector form by projected Newton. Each run fits a fresh rig from the neutral one; its
+/// positions are the landmarks at the end (m), and a note gives
+/// ‖MᵀM − I‖ of both maps and the landmark RMS.
+ComparisonSubject rig_subject(const std::string& name, const RigFitCase& fit_case);
 
 } // namespace sinew

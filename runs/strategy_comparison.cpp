@@ -97,6 +97,8 @@ std::vector<double> default_kappas(Nlp& nlp)
 SolverOptions strategy_options(const ComparedStrategy& strategy, const SolverOptions& base)
 {
     SolverOptions options = base;
+    for (const auto& [key, value] : strategy.backend)
+        options.backend[key] = value;
     if (strategy.kappa) {
         char text[32];
         std::snprintf(text, sizeof text, "%.17g", *strategy.kappa);
@@ -121,11 +123,11 @@ std::vector<ComparedStrategy> comparison_strategies(const Nlp& nlp, const std::v
             continue;
         }
         if (!takes_kappa(name)) {
-            strategies.push_back({name, name, std::nullopt});
+            strategies.push_back({name, name, std::nullopt, {}, {}});
             continue;
         }
         for (double kappa : kappas)
-            strategies.push_back({kappa_label(name, kappa), name, kappa});
+            strategies.push_back({kappa_label(name, kappa), name, kappa, {}, {}});
     }
     return strategies;
 }
@@ -145,7 +147,7 @@ Comparison run_comparison(const ComparisonSubject& subject, const std::vector<Co
         SolverOptions run_options = strategy_options(strategy, options);
         if (progress.iteration)
             run_options.on_iteration = [&](const HistoryRow& row) { progress.iteration(k, count, strategy, row); };
-        ComparisonSubject::Outcome outcome = subject.run(strategy.solver, run_options);
+        ComparisonSubject::Outcome outcome = subject.run(strategy, run_options);
         if (progress.finished)
             progress.finished(k, count, strategy, outcome);
         if (k == 0)

@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,6 +21,11 @@ struct ComparedStrategy {
     std::string label;              ///< "kkt-newton", "relaxed-kkt κ=1e4", …
     std::string solver;
     std::optional<double> kappa;    ///< penalty: one solve at this κ (no continuation)
+    /// Empty: the subject's NLP. Otherwise another formulation the subject
+    /// offers (ComparisonSubject::variants), by its name.
+    std::string form;
+    /// Backend options of this strategy, over the comparison's own.
+    std::map<std::string, std::string> backend;
 };
 
 /// What is compared: a scene or an NLP, run afresh for every strategy.
@@ -37,7 +43,10 @@ struct ComparisonSubject {
         std::vector<std::string> notes;  ///< settings the run overrode or dropped
         std::vector<std::string> constraint_ranks;  ///< each constraint set's rank at the start (scenes)
     };
-    std::function<Outcome(const std::string& solver, const SolverOptions& options)> run;
+    std::function<Outcome(const ComparedStrategy& strategy, const SolverOptions& options)> run;
+    /// Strategies on formulations other than make_nlp()'s that the subject
+    /// runs too (the rig: the seed's penalty form, rotation vectors).
+    std::vector<ComparedStrategy> variants;
 };
 
 /// The strategies a comparison runs: each of `solvers` (empty: every solver)
@@ -61,8 +70,9 @@ std::vector<double> default_kappas(Nlp& nlp);
 /// κ as a label shows it: "1e4" for a power of ten, else "2.5e+06".
 std::string kappa_text(double kappa);
 
-/// The options a strategy runs with: `base`, plus κ for relaxed-kkt and for
-/// penalty a single solve at that κ (kappa_growth = 1, no continuation).
+/// The options a strategy runs with: `base` with the strategy's backend
+/// options, plus κ for relaxed-kkt and for penalty a single solve at that κ
+/// (kappa_growth = 1, no continuation).
 SolverOptions strategy_options(const ComparedStrategy& strategy, const SolverOptions& base);
 
 /// One strategy's run and how far it ended from the reference solution.
