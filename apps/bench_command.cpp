@@ -266,7 +266,9 @@ void add_bench_command(CLI::App& app, int& exit_code)
                         "suite strategies: folder for each problem's comparison and the performance profiles")
         ->capture_default_str();
     command->add_flag("--no-plots", flags->no_plots, "suite strategies: tables and JSON only");
-    command->add_option("--solver", flags->solvers, "only these solvers (repeatable)");
+    command->add_option("--solver", flags->solvers,
+                        "only these solvers (repeatable); suite rig: a strategy's label too, such as "
+                        "\"ipopt (Gauss-Newton)\"");
     command->add_option("--problem", flags->problems, "only these problems (repeatable)");
     command->add_option("--json", flags->json, "write every run's full result to this file");
     command->add_option("--optimum-tol", flags->reference.objective,
@@ -303,8 +305,11 @@ void add_bench_command(CLI::App& app, int& exit_code)
             throw InputError("unknown suite '" + flags->suite + "'; valid suites: " + valid + ", " + kKernelSuite +
                              ", " + kStrategiesSuite + ", " + kReuseSuite + ", " + kRigSuite);
         }
-        for (const auto& name : flags->solvers)
-            find_solver(name);
+        if (rig)
+            check_rig_strategy_names(flags->solvers);
+        else
+            for (const auto& name : flags->solvers)
+                find_solver(name);
         for (const auto& name : flags->problems)
             find_builtin_problem(name);
         if (reuse) {

@@ -1,6 +1,7 @@
 #include "rig_bench.hpp"
 
 #include "sinew/core/format_number.hpp"
+#include "sinew/core/input_error.hpp"
 #include "sinew/inverse/rig_fit_run.hpp"
 #include "sinew/runs/result_json.hpp"
 
@@ -111,6 +112,21 @@ nlohmann::json iteration_cost(const RigFitCase& fit_case, int tets)
 
 } // namespace
 
+void check_rig_strategy_names(const std::vector<std::string>& names)
+{
+    const std::vector<RigFitStrategy> strategies = rig_fit_strategies({});
+    for (const std::string& name : names) {
+        if (std::any_of(strategies.begin(), strategies.end(),
+                        [&](const RigFitStrategy& s) { return s.solver == name || s.label == name; }))
+            continue;
+        std::string valid;
+        for (const RigFitStrategy& s : strategies)
+            valid += (valid.empty() ? "" : ", ") + ("'" + s.label + "'");
+        throw InputError("--solver: '" + name + "' is neither a solver nor a strategy of suite rig (strategies: " +
+                         valid + ")");
+    }
+}
+
 bool run_rig_bench(const std::vector<int>& sizes, const std::vector<std::string>& solvers,
                    const SolverOptions& options, nlohmann::json& runs)
 {
@@ -125,7 +141,10 @@ bool run_rig_bench(const std::vector<int>& sizes, const std::vector<std::string>
                              static_cast<int>(definition.muscle_elements.size()) + 2 * RigParameters::kAffineParameters,
                              targets);
             for (const RigFitStrategy& strategy : rig_fit_strategies(options)) {
-                if (!solvers.empty() && std::find(solvers.begin(), solvers.end(), strategy.solver) == solvers.end())
+                const auto chosen = [&](const std::string& name) {
+                    return std::find(solvers.begin(), solvers.end(), name) != solvers.end();
+                };
+                if (!solvers.empty() && !chosen(strategy.solver) && !chosen(strategy.label))
                     continue;
                 const RigFitOutcome outcome = run_rig_fit(definition, fit_case.inner, targets, strategy, {});
                 print_fit_row(outcome, targets);

@@ -11,12 +11,16 @@ namespace sinew::cli {
 /// Suite rig of `sinew bench` (issue 15): for each face size (`sizes`, tets
 /// aimed at), targets synthesized from a known θ* (synthesize_targets), once
 /// exact and once with 1 mm noise (seed 1), fitted from the neutral rig by
-/// every strategy of rig_fit_strategies (or those whose solver `solvers`
-/// names); one markdown table per size and noise, and a table of what one
+/// every strategy of rig_fit_strategies (or those whose solver or label
+/// `solvers` names); one markdown table per size and noise, and a table of what one
 /// outer iteration costs at θ* (equilibrium solve, factorization, forward
 /// sensitivities for every parameter, adjoint gradient). `options`: the
 /// outer solves' tolerance and limits. Every run goes into `runs`. True when
 /// every fit converged.
+/// InputError unless each name is the solver or the label of a strategy of
+/// rig_fit_strategies, naming the valid ones.
+void check_rig_strategy_names(const std::vector<std::string>& names);
+
 bool run_rig_bench(const std::vector<int>& sizes, const std::vector<std::string>& solvers,
                    const SolverOptions& options, nlohmann::json& runs);
 
