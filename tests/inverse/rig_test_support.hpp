@@ -5,6 +5,7 @@
 #include "sinew/energies/potentials/element_model.hpp"
 #include "sinew/inverse/muscle_rig.hpp"
 #include "sinew/mesh/box_tets.hpp"
+#include "sinew/problems/nlp.hpp"
 
 #include <Eigen/Geometry>
 
@@ -74,6 +75,20 @@ inline RigParameters moved_parameters(double jaw_degrees)
     theta.cranium_map = Eigen::AngleAxisd(0.05, Eigen::Vector3d(0.3, 1.0, 0.2).normalized()).toRotationMatrix();
     theta.cranium_translation = Eigen::Vector3d(0.002, 0.001, -0.003);
     return theta;
+}
+
+/// Central differences of a fit's objective, step h in every variable: each
+/// side a full re-solve of the rig (the reference for adjoint gradients).
+inline Eigen::VectorXd objective_differences(Nlp& nlp, const Eigen::VectorXd& x, double h = 1e-6)
+{
+    Eigen::VectorXd differences(x.size());
+    for (Eigen::Index k = 0; k < x.size(); ++k) {
+        Eigen::VectorXd plus = x, minus = x;
+        plus[k] += h;
+        minus[k] -= h;
+        differences[k] = (nlp.objective(plus) - nlp.objective(minus)) / (2 * h);
+    }
+    return differences;
 }
 
 } // namespace sinew::test

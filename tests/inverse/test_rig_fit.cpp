@@ -191,14 +191,7 @@ TEST_CASE("rig fit: the objective gradient matches central differences of re-sol
         REQUIRE(std::isfinite(problem.objective(theta)));
         Eigen::VectorXd gradient(theta.size());
         problem.gradient(theta, gradient);
-        Eigen::VectorXd differences(theta.size());
-        for (Eigen::Index k = 0; k < theta.size(); ++k) {
-            const double h = 1e-6;
-            Eigen::VectorXd plus = theta, minus = theta;
-            plus[k] += h;
-            minus[k] -= h;
-            differences[k] = (problem.objective(plus) - problem.objective(minus)) / (2 * h);
-        }
+        const Eigen::VectorXd differences = objective_differences(problem, theta);
         CAPTURE(gradient.transpose(), differences.transpose());
         REQUIRE(differences.norm() > 0.0);
         CHECK((gradient - differences).norm() <= 1e-6 * differences.norm());

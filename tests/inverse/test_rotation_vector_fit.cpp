@@ -33,14 +33,7 @@ TEST_CASE("rotation-vector fit: the gradient matches central differences of re-s
     REQUIRE(std::isfinite(problem.objective(phi)));
     Eigen::VectorXd gradient(phi.size());
     problem.gradient(phi, gradient);
-    Eigen::VectorXd differences(phi.size());
-    for (Eigen::Index k = 0; k < phi.size(); ++k) {
-        const double h = 1e-6;
-        Eigen::VectorXd plus = phi, minus = phi;
-        plus[k] += h;
-        minus[k] -= h;
-        differences[k] = (problem.objective(plus) - problem.objective(minus)) / (2 * h);
-    }
+    const Eigen::VectorXd differences = objective_differences(problem, phi);
     CAPTURE(gradient.transpose(), differences.transpose());
     REQUIRE(differences.norm() > 0.0);
     CHECK((gradient - differences).norm() <= 1e-6 * differences.norm());
