@@ -19,8 +19,8 @@ struct RigFitStrategy {
     SolverOptions options;
 };
 
-/// The strategies of the rig suite, each with `base`'s tolerance, limits and
-/// log: Ipopt with the Gauss-Newton Hessian (hessian_approximation=exact) and
+/// The strategies of the rig suite, each with `base`'s tolerance, limits, log
+/// and backend options (a strategy's own options take precedence): Ipopt with the Gauss-Newton Hessian (hessian_approximation=exact) and
 /// in its limited-memory mode; kkt-newton and relaxed-kkt (κ = 1e8) taking
 /// Gauss-Newton steps on the KKT system; augmented-lagrangian;
 /// nlopt-slsqp; the seed's penalty form by projected Newton (Gauss-Newton
@@ -72,7 +72,7 @@ struct RigFitCase {
 };
 
 /// The face of about `tets` tets (generate_face, face_rig), inner solves to
-/// 1e-10 of the force scale (at most 100 Newton iterations), targets from
+/// 1e-12 of the force scale (at most 100 Newton iterations), targets from
 /// synthesize_targets with `noise` (m) and seed 1: the case of `sinew bench
 /// --suite rig` and `sinew compare face-rig`. InputError for a size
 /// generate_face refuses.

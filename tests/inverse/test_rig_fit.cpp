@@ -1,6 +1,7 @@
 #include "sinew/core/input_error.hpp"
 #include "sinew/energies/constraints/orthogonality.hpp"
 #include "sinew/inverse/rig_fit_problem.hpp"
+#include "sinew/inverse/rig_fit_run.hpp"
 #include "sinew/problems/derivative_check.hpp"
 #include "sinew/problems/taylor_test.hpp"
 #include "sinew/solvers/solver.hpp"
@@ -209,4 +210,21 @@ TEST_CASE("rig fit: bad targets and settings are refused with a message", "[inve
     RigFitSettings negative;
     negative.tikhonov = -1.0;
     CHECK_THROWS_AS(RigFitProblem(rig, targets, negative), InputError);
+}
+
+TEST_CASE("rig fit strategies: the caller's backend options reach every strategy and its own take precedence",
+          "[inverse][rig][fit]")
+{
+    SolverOptions base;
+    base.tolerance = 1e-9;
+    base.backend["print_level"] = "0";
+    base.backend["hessian_approximation"] = "limited-memory";
+    const std::vector<RigFitStrategy> strategies = rig_fit_strategies(base);
+    REQUIRE(strategies.size() >= 2);
+    for (const RigFitStrategy& strategy : strategies) {
+        CHECK(strategy.options.tolerance == 1e-9);
+        CHECK(strategy.options.backend.at("print_level") == "0");
+    }
+    CHECK(strategies.front().label == "ipopt (Gauss-Newton)");
+    CHECK(strategies.front().options.backend.at("hessian_approximation") == "exact");
 }
