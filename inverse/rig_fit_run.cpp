@@ -165,8 +165,8 @@ RigFitCase face_fit_case(int tets, double noise)
     // is not zero. The outer line searches measure decreases of f down to
     // ½ gᵀ H_GN⁻¹ g at their KKT tolerance; inner solves to 1e-10 left f
     // noisier than that near a noisy optimum, and every line-search strategy
-    // stopped there with line_search_failed. 1e-12 keeps f clean and stays
-    // well above the inner gradient's round-off (about 1e-15 of the scale).
+    // stopped there with line_search_failed. At 1e-12 they converge
+    // (docs/inverse.md, "The nested solve").
     fit_case.inner.options.tolerance = 1e-12;
     fit_case.inner.options.kkt_tolerance = 1e-8;
     fit_case.inner.options.max_iterations = 100;
