@@ -20,8 +20,9 @@ struct RigFitStrategy {
 };
 
 /// The strategies of the rig suite, each with `base`'s tolerance, limits, log
-/// and backend options (a strategy's own options take precedence): Ipopt with the Gauss-Newton Hessian (hessian_approximation=exact) and
-/// in its limited-memory mode; kkt-newton and relaxed-kkt (κ = 1e8) taking
+/// and backend options (a strategy's own options take precedence): Ipopt
+/// with the Gauss-Newton Hessian (hessian_approximation=exact) and in its
+/// limited-memory mode; kkt-newton and relaxed-kkt (κ = 1e8) taking
 /// Gauss-Newton steps on the KKT system; augmented-lagrangian;
 /// nlopt-slsqp; the seed's penalty form by projected Newton (Gauss-Newton
 /// with the activations' bounds); and the rotation-vector form (no
