@@ -15,6 +15,11 @@
 
 namespace sinew {
 
+std::map<std::string, std::string> ipopt_gauss_newton_options()
+{
+    return {{"hessian_approximation", "exact"}, {"constr_mult_init_max", "0"}, {"mu_strategy", "adaptive"}};
+}
+
 std::vector<RigFitStrategy> rig_fit_strategies(const SolverOptions& base)
 {
     std::vector<RigFitStrategy> strategies;
@@ -25,7 +30,7 @@ std::vector<RigFitStrategy> rig_fit_strategies(const SolverOptions& base)
             s.options.backend[key] = std::move(value);
         strategies.push_back(std::move(s));
     };
-    add("ipopt (Gauss-Newton)", "ipopt", OrthogonalityForm::constraints, {{"hessian_approximation", "exact"}});
+    add("ipopt (Gauss-Newton)", "ipopt", OrthogonalityForm::constraints, ipopt_gauss_newton_options());
     add("ipopt (limited-memory)", "ipopt", OrthogonalityForm::constraints, {});
     add("kkt-newton", "kkt-newton", OrthogonalityForm::constraints, {});
     add("relaxed-kkt (kappa 1e8)", "relaxed-kkt", OrthogonalityForm::constraints, {{"kappa", "1e8"}});

@@ -6,6 +6,7 @@
 #include "sinew/solvers/result.hpp"
 #include "sinew/solvers/solver_options.hpp"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -19,9 +20,22 @@ struct RigFitStrategy {
     SolverOptions options;
 };
 
+/// Ipopt's options for the fit with the Gauss-Newton Hessian: that Hessian
+/// as if exact (hessian_approximation=exact), the constraints' multipliers
+/// started at 0 (constr_mult_init_max=0) and the adaptive barrier update
+/// (mu_strategy=adaptive). Ipopt's default least-squares multipliers at the
+/// neutral start make the Lagrangian's Hessian indefinite on the 100k face:
+/// its first step then left the jaw map 0.84 from orthogonal, the warm-started
+/// inner solves followed the tissue into another of its equilibria, and Ipopt
+/// converged to a stationary point on that branch, not to θ*. Multipliers
+/// from 0 make the first step the Gauss-Newton step; the adaptive barrier
+/// takes 12 iterations where the monotone one takes 16 (docs/benchmarks.md,
+/// "Ipopt at its best").
+std::map<std::string, std::string> ipopt_gauss_newton_options();
+
 /// The strategies of the rig suite, each with `base`'s tolerance, limits, log
 /// and backend options (a strategy's own options take precedence): Ipopt
-/// with the Gauss-Newton Hessian (hessian_approximation=exact) and in its
+/// with the Gauss-Newton Hessian (ipopt_gauss_newton_options) and in its
 /// limited-memory mode; kkt-newton and relaxed-kkt (κ = 1e8) taking
 /// Gauss-Newton steps on the KKT system; augmented-lagrangian;
 /// nlopt-slsqp; the seed's penalty form by projected Newton (Gauss-Newton

@@ -79,7 +79,7 @@ ComparisonSubject rig_subject(const std::string& name, const RigFitCase& fit_cas
     };
     // Ipopt on make_nlp() runs its limited-memory mode (the Hessian is Gauss-Newton's, not exact).
     subject.variants.push_back({"ipopt (Gauss-Newton)", "ipopt", std::nullopt,
-                                to_string(OrthogonalityForm::constraints), {{"hessian_approximation", "exact"}}});
+                                to_string(OrthogonalityForm::constraints), ipopt_gauss_newton_options()});
     subject.variants.push_back(
         {"penalty (seed)", "projected-newton", std::nullopt, to_string(OrthogonalityForm::penalty), {}});
     subject.variants.push_back(

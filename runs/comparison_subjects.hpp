@@ -23,7 +23,7 @@ ComparisonSubject builtin_subject(const BuiltinProblem& problem, const SceneRunR
 /// A rig fit (rig_fit_run.hpp): make_nlp() is the fit with orthogonality
 /// constraints, which every solver that takes equalities and bounds runs;
 /// the variants are Ipopt with the Gauss-Newton Hessian
-/// (hessian_approximation=exact), and the seed's penalty form and the
+/// (ipopt_gauss_newton_options), and the seed's penalty form and the
 /// rotation-vector form by projected Newton. Each run fits a fresh rig from the neutral one; its
 /// positions are the landmarks at the end (m), and a note gives
 /// ‖MᵀM − I‖ of both maps and the landmark RMS.

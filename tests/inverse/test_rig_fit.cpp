@@ -227,4 +227,5 @@ TEST_CASE("rig fit strategies: the caller's backend options reach every strategy
     }
     CHECK(strategies.front().label == "ipopt (Gauss-Newton)");
     CHECK(strategies.front().options.backend.at("hessian_approximation") == "exact");
+    CHECK(strategies.front().options.backend.at("constr_mult_init_max") == "0");
 }
