@@ -306,7 +306,7 @@ void add_bench_command(CLI::App& app, int& exit_code)
                              ", " + kStrategiesSuite + ", " + kReuseSuite + ", " + kRigSuite);
         }
         if (rig)
-            check_rig_strategy_names(flags->solvers);
+            check_rig_strategies(flags->solvers, options);
         else
             for (const auto& name : flags->solvers)
                 find_solver(name);

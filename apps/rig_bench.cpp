@@ -4,6 +4,7 @@
 #include "sinew/core/input_error.hpp"
 #include "sinew/inverse/rig_fit_run.hpp"
 #include "sinew/runs/result_json.hpp"
+#include "sinew/solvers/solver.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -110,11 +111,18 @@ nlohmann::json iteration_cost(const RigFitCase& fit_case, int tets)
             {"forward_s", number(forward)}, {"forward_solves", solves}, {"parameters", J.cols()}};
 }
 
+/// Whether `strategy` is one of those `names` choose (all when there are none).
+bool chosen(const RigFitStrategy& strategy, const std::vector<std::string>& names)
+{
+    return names.empty() || std::find(names.begin(), names.end(), strategy.solver) != names.end() ||
+           std::find(names.begin(), names.end(), strategy.label) != names.end();
+}
+
 } // namespace
 
-void check_rig_strategy_names(const std::vector<std::string>& names)
+void check_rig_strategies(const std::vector<std::string>& names, const SolverOptions& options)
 {
-    const std::vector<RigFitStrategy> strategies = rig_fit_strategies({});
+    const std::vector<RigFitStrategy> strategies = rig_fit_strategies(options);
     for (const std::string& name : names) {
         if (std::any_of(strategies.begin(), strategies.end(),
                         [&](const RigFitStrategy& s) { return s.solver == name || s.label == name; }))
@@ -125,6 +133,9 @@ void check_rig_strategy_names(const std::vector<std::string>& names)
         throw InputError("--solver: '" + name + "' is neither a solver nor a strategy of suite rig (strategies: " +
                          valid + ")");
     }
+    for (const RigFitStrategy& strategy : strategies)
+        if (chosen(strategy, names))
+            find_solver(strategy.solver).check_options(strategy.options);
 }
 
 bool run_rig_bench(const std::vector<int>& sizes, const std::vector<std::string>& solvers,
@@ -141,10 +152,7 @@ bool run_rig_bench(const std::vector<int>& sizes, const std::vector<std::string>
                              static_cast<int>(definition.muscle_elements.size()) + 2 * RigParameters::kAffineParameters,
                              targets);
             for (const RigFitStrategy& strategy : rig_fit_strategies(options)) {
-                const auto chosen = [&](const std::string& name) {
-                    return std::find(solvers.begin(), solvers.end(), name) != solvers.end();
-                };
-                if (!solvers.empty() && !chosen(strategy.solver) && !chosen(strategy.label))
+                if (!chosen(strategy, solvers))
                     continue;
                 const RigFitOutcome outcome = run_rig_fit(definition, fit_case.inner, targets, strategy, {});
                 print_fit_row(outcome, targets);

@@ -17,9 +17,11 @@ namespace sinew::cli {
 /// sensitivities for every parameter, adjoint gradient). `options`: the
 /// outer solves' tolerance and limits. Every run goes into `runs`. True when
 /// every fit converged.
-/// InputError unless each name is the solver or the label of a strategy of
-/// rig_fit_strategies, naming the valid ones.
-void check_rig_strategy_names(const std::vector<std::string>& names);
+/// Everything run_rig_bench checks before it generates a face: InputError
+/// unless each name is the solver or the label of a strategy of
+/// rig_fit_strategies (naming the valid ones), or when a chosen strategy's
+/// solver refuses its options (`options` with the strategy's own).
+void check_rig_strategies(const std::vector<std::string>& names, const SolverOptions& options);
 
 bool run_rig_bench(const std::vector<int>& sizes, const std::vector<std::string>& solvers,
                    const SolverOptions& options, nlohmann::json& runs);
