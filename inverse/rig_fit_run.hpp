@@ -24,13 +24,13 @@ struct RigFitStrategy {
 /// as if exact (hessian_approximation=exact), the constraints' multipliers
 /// started at 0 (constr_mult_init_max=0) and the adaptive barrier update
 /// (mu_strategy=adaptive). Ipopt's default least-squares multipliers at the
-/// neutral start make the Lagrangian's Hessian indefinite on the 100k face:
-/// its first step then left the jaw map 0.84 from orthogonal, the warm-started
-/// inner solves followed the tissue into another of its equilibria, and Ipopt
-/// converged to a stationary point on that branch, not to θ*. Multipliers
+/// neutral start can make the Lagrangian's Hessian indefinite (they did on
+/// the 100k face): the first step then takes the maps far from orthogonal,
+/// the warm-started inner solves can follow the tissue into another of its
+/// equilibria, and Ipopt converges on that branch, not to θ*. Multipliers
 /// from 0 make the first step the Gauss-Newton step; the adaptive barrier
-/// takes 12 iterations where the monotone one takes 16 (docs/benchmarks.md,
-/// "Ipopt at its best").
+/// needs fewer iterations than the monotone one (docs/benchmarks.md, "Ipopt
+/// at its best").
 std::map<std::string, std::string> ipopt_gauss_newton_options();
 
 /// The strategies of the rig suite, each with `base`'s tolerance, limits, log
