@@ -102,6 +102,18 @@ void set_default_options(PetscPreconditioner preconditioner)
     }
 }
 
+/// Whether GAMG may keep its prolongators from one matrix to the next of
+/// the same pattern (PetscCgSolver::set_up_preconditioner): yes unless the
+/// user's PETSC_OPTIONS say -pc_gamg_reuse_interpolation false.
+bool prolongator_reuse_allowed()
+{
+    PetscBool allowed = PETSC_TRUE;
+    PetscBool set = PETSC_FALSE;
+    check(PetscOptionsGetBool(nullptr, nullptr, "-pc_gamg_reuse_interpolation", &allowed, &set),
+          "PetscOptionsGetBool");
+    return !set || allowed == PETSC_TRUE;
+}
+
 /// CG on the true residual with the multigrid and sinew's defaults, then
 /// PETSc's options database (PETSC_OPTIONS) over these choices.
 void configure_cg(KSP ksp, PetscPreconditioner preconditioner, double tolerance, int max_iterations)
@@ -113,10 +125,6 @@ void configure_cg(KSP ksp, PetscPreconditioner preconditioner, double tolerance,
     check(KSPGetPC(ksp, &pc), "KSPGetPC");
     if (preconditioner == PetscPreconditioner::gamg) {
         check(PCSetType(pc, PCGAMG), "PCSetType");
-        // Each Newton matrix gets its own prolongators: kept from an earlier
-        // matrix (an indefinite exact Hessian, say), they gave an indefinite
-        // preconditioner on the next one.
-        check(PCGAMGSetReuseInterpolation(pc, PETSC_FALSE), "PCGAMGSetReuseInterpolation");
     } else {
         check(PCSetType(pc, PCHYPRE), "PCSetType");
         check(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
@@ -187,19 +195,21 @@ public:
             // PETSc's AIJ holds both triangles of the symmetric matrix.
             const SparseMatrix full = lower.selfadjointView<Eigen::Lower>();
             const int block_size = usable_block_size(static_cast<int>(A.rows()));
-            if (!pattern_.matches(lower) || block_size != matrix_block_size_) {
+            const bool same_matrix = pattern_.matches(lower) && block_size == matrix_block_size_;
+            if (!same_matrix) {
                 create_matrix(full, block_size);
                 pattern_.remember(lower);
                 ++stats_.symbolic_analyses;
             }
             set_values(full);
             attach_near_null_space();
-            set_up_preconditioner();
+            set_up_preconditioner(same_matrix && last_solve_converged_);
         } catch (const PetscFailure& failure) {
             return fail(LinearStatus::failed, failure.what());
         }
         ++stats_.numeric_factorizations;
         factorized_ = true;
+        last_solve_converged_ = false;
         message_.clear();
         return LinearStatus::ok;
     }
@@ -232,6 +242,7 @@ public:
             return fail(LinearStatus::failed, "iterate is not finite (non-finite right-hand side or breakdown)");
         if (reason < 0)
             return diverged(reason, iterations, residual / std::max(b.norm(), 1e-300));
+        last_solve_converged_ = true;
         message_.clear();
         return LinearStatus::ok;
     }
@@ -326,12 +337,25 @@ private:
     }
 
     /// The KSP, made once (configure_cg), then the multigrid's setup for
-    /// the current matrix.
-    void set_up_preconditioner()
+    /// the current matrix. GAMG keeps its prolongators (aggregates and
+    /// tentative prolongator P; the Galerkin products PᵀAP are formed anew)
+    /// when `may_keep_prolongators`: the matrix has the last one's pattern
+    /// and CG converged on the last hierarchy. The coarse operators stay
+    /// positive definite with any full-rank P; a hierarchy on which CG broke
+    /// down or met non-positive curvature (an indefinite exact Hessian) is
+    /// not carried to the next matrix.
+    void set_up_preconditioner(bool may_keep_prolongators)
     {
         if (ksp_ == nullptr) {
             check(KSPCreate(PETSC_COMM_SELF, &ksp_), "KSPCreate");
             configure_cg(ksp_, preconditioner_, tolerance_, max_iterations_);
+            reuse_allowed_ = preconditioner_ == PetscPreconditioner::gamg && prolongator_reuse_allowed();
+        }
+        if (preconditioner_ == PetscPreconditioner::gamg) {
+            PC pc = nullptr;
+            check(KSPGetPC(ksp_, &pc), "KSPGetPC");
+            const bool keep = reuse_allowed_ && may_keep_prolongators;
+            check(PCGAMGSetReuseInterpolation(pc, keep ? PETSC_TRUE : PETSC_FALSE), "PCGAMGSetReuseInterpolation");
         }
         check(KSPSetOperators(ksp_, A_, A_), "KSPSetOperators");
         check(KSPSetUp(ksp_), "KSPSetUp");
@@ -364,6 +388,8 @@ private:
     int matrix_block_size_ = 1;
     AnalysedPattern pattern_;
     bool factorized_ = false;
+    bool last_solve_converged_ = false;  ///< CG converged on the current hierarchy
+    bool reuse_allowed_ = false;         ///< GAMG, and PETSC_OPTIONS do not forbid kept prolongators
     std::string message_;
 };
 

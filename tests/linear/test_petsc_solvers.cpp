@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -81,4 +82,57 @@ TEST_CASE("an algebraic multigrid refuses a near null space of another size", "[
     CHECK_THAT(solver->last_message(), Catch::Contains("near null space has"));
     Eigen::VectorXd x;
     CHECK(solver->solve(Eigen::VectorXd::Ones(system.lower.rows()), x) == sinew::LinearStatus::failed);
+}
+
+namespace {
+
+/// `lower` with σ added to its diagonal.
+sinew::SparseMatrix shifted(const sinew::SparseMatrix& lower, double sigma)
+{
+    sinew::SparseMatrix identity(lower.rows(), lower.cols());
+    identity.setIdentity();
+    return lower + sigma * identity;
+}
+
+/// A GAMG solver with the rigid-body modes, to a relative residual of 1e-8.
+std::unique_ptr<sinew::LinearSolver> gamg_with_modes(const sinew::NearNullSpace& modes)
+{
+    auto solver = sinew::make_linear_solver("petsc-cg-gamg", 1e-8);
+    solver->set_near_null_space(modes);
+    return solver;
+}
+
+} // namespace
+
+TEST_CASE("GAMG solves a sequence of matrices of one pattern to the tolerance on kept prolongators", "[linear][petsc]")
+{
+    const ElasticSystem system = elastic_system("twisted-cantilever-6k");
+    const double diagonal = system.lower.diagonal().cwiseAbs().maxCoeff();
+    const auto solver = gamg_with_modes(system.modes);
+    for (const double sigma : {0.0, 0.3 * diagonal, 1e-3 * diagonal}) {
+        CAPTURE(sigma);
+        const auto [iterations, residual] = iterations_to_solve(*solver, shifted(system.lower, sigma));
+        CAPTURE(iterations);
+        CHECK(residual <= 1e-8);
+    }
+}
+
+TEST_CASE("GAMG builds new prolongators after CG met an indefinite matrix", "[linear][petsc]")
+{
+    const ElasticSystem system = elastic_system("twisted-cantilever-6k");
+    const double diagonal = system.lower.diagonal().cwiseAbs().maxCoeff();
+    const auto solver = gamg_with_modes(system.modes);
+    REQUIRE(solver->factorize(shifted(system.lower, -0.5 * diagonal)) == sinew::LinearStatus::ok);
+    Eigen::VectorXd x;
+    REQUIRE(solver->solve(Eigen::VectorXd::Ones(system.lower.rows()), x) ==
+            sinew::LinearStatus::not_positive_definite);
+
+    // After the indefinite matrix, the same iterations as a solver that
+    // never saw it: its hierarchy is built from the positive definite matrix.
+    const auto [iterations_after, residual_after] = iterations_to_solve(*solver, system.lower);
+    const auto fresh = gamg_with_modes(system.modes);
+    const auto [iterations_fresh, residual_fresh] = iterations_to_solve(*fresh, system.lower);
+    CAPTURE(iterations_after, iterations_fresh);
+    CHECK(residual_after <= 1e-8);
+    CHECK(iterations_after == iterations_fresh);
 }
