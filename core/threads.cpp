@@ -57,4 +57,16 @@ int blas_threads()
     return get ? get() : -1;
 }
 
+SingleThreadedBlas::SingleThreadedBlas() : previous_(blas_threads())
+{
+    if (previous_ > 1)
+        openblas<void(int)>("openblas_set_num_threads")(1);
+}
+
+SingleThreadedBlas::~SingleThreadedBlas()
+{
+    if (previous_ > 1)
+        openblas<void(int)>("openblas_set_num_threads")(previous_);
+}
+
 } // namespace sinew

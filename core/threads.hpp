@@ -20,4 +20,20 @@ int threads();
 /// BLAS in the process is not OpenBLAS.
 int blas_threads();
 
+/// OpenBLAS held at one thread while this object lives, then set back to
+/// the count it had: for code that runs on one core but calls BLAS on
+/// long vectors (PETSc's vector operations in its CG), where OpenBLAS would
+/// wake its other threads for every daxpy and ddot and leave them spinning
+/// (sched_yield) between calls, on cores the process's other threads need.
+class SingleThreadedBlas {
+public:
+    SingleThreadedBlas();
+    ~SingleThreadedBlas();
+    SingleThreadedBlas(const SingleThreadedBlas&) = delete;
+    SingleThreadedBlas& operator=(const SingleThreadedBlas&) = delete;
+
+private:
+    int previous_;  ///< OpenBLAS's count before; −1 when the BLAS is not OpenBLAS
+};
+
 } // namespace sinew

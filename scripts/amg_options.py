@@ -16,6 +16,7 @@ import tempfile
 
 SETTINGS = [
     ("petsc-cg-gamg", ""),
+    ("petsc-cg-gamg", "-pc_gamg_reuse_interpolation false"),
     ("petsc-cg-gamg", "-pc_gamg_agg_nsmooths 1 -pc_gamg_threshold 0"),
     ("petsc-cg-gamg", "-pc_gamg_agg_nsmooths 1 -pc_gamg_threshold 0.02"),
     ("petsc-cg-gamg", "-pc_gamg_threshold 0"),

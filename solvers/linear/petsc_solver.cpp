@@ -1,6 +1,7 @@
 #include "sinew/solvers/linear/petsc_solver.hpp"
 
 #include "sinew/core/input_error.hpp"
+#include "sinew/core/threads.hpp"
 #include "sinew/solvers/linear/analysed_pattern.hpp"
 #include "sinew/solvers/linear/matrix_input.hpp"
 
@@ -191,6 +192,7 @@ public:
                                                   " rows, the matrix " + std::to_string(A.rows()));
         SparseMatrix storage;
         const SparseMatrix& lower = compressed(A, storage);
+        const SingleThreadedBlas one_core;  // PETSc runs on one core
         try {
             // PETSc's AIJ holds both triangles of the symmetric matrix.
             const SparseMatrix full = lower.selfadjointView<Eigen::Lower>();
@@ -224,6 +226,7 @@ public:
         KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
         PetscInt iterations = 0;
         PetscReal residual = 0.0;
+        const SingleThreadedBlas one_core;  // PETSc runs on one core
         try {
             copy_into(b, b_);
             check(KSPSolve(ksp_, b_, x_), "KSPSolve");

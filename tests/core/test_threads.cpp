@@ -30,3 +30,16 @@ TEST_CASE("set_threads refuses a count outside 1 to the available cores and chan
     CHECK(threads() == 1);
     CHECK(omp_get_max_threads() == 1);
 }
+
+TEST_CASE("SingleThreadedBlas holds OpenBLAS at one thread in its scope and leaves OpenMP alone", "[threads]")
+{
+    const int cores = available_cores();
+    set_threads(cores);
+    {
+        const SingleThreadedBlas one_core;
+        CHECK(blas_threads() == 1);
+        CHECK(omp_get_max_threads() == cores);
+    }
+    CHECK(blas_threads() == cores);
+    CHECK(threads() == cores);
+}
