@@ -183,6 +183,8 @@ public:
     LinearStatus factorize(const SparseMatrix& A) override
     {
         factorized_ = false;
+        const bool hierarchy_worked = last_solve_converged_;
+        last_solve_converged_ = false;  // stays false when this setup fails
         const std::string unusable = describe_unusable_matrix(A, EntriesRead::lower_triangle);
         if (!unusable.empty())
             return fail(LinearStatus::failed, unusable);
@@ -205,13 +207,12 @@ public:
             }
             set_values(full);
             attach_near_null_space();
-            set_up_preconditioner(same_matrix && last_solve_converged_);
+            set_up_preconditioner(same_matrix && hierarchy_worked);
         } catch (const PetscFailure& failure) {
             return fail(LinearStatus::failed, failure.what());
         }
         ++stats_.numeric_factorizations;
         factorized_ = true;
-        last_solve_converged_ = false;
         message_.clear();
         return LinearStatus::ok;
     }
