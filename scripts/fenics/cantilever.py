@@ -3,7 +3,9 @@
 
 Solves exactly the problem of sinew's built-in scenes cantilever-{6,52,206}k
 and twisted-cantilever-{6,52,206}k (scenes/cantilever-*.json)
-with dolfin's Newton solver, exact Jacobian, MUMPS LU and equal load steps,
+with dolfin's Newton solver, exact Jacobian, equal load steps and MUMPS LU
+(or, with --linear-solver, a Krylov method preconditioned by PETSc's GAMG or
+hypre's BoomerAMG with sinew's options for them),
 and prints one JSON line with the figures (see README.md next to this file).
 
 Run with the Debian interpreter, /usr/bin/python3 (python3-dolfin installs
@@ -195,14 +197,28 @@ class Cantilever:
         self.free = np.ones(V.dim(), dtype=bool)
         self.free[self.fixed_dofs] = False
 
-        self.b = df.PETScVector()
-        self.A = df.PETScMatrix()
+        # Dirichlet conditions applied symmetrically (rows and columns of the
+        # fixed dofs eliminated, the column terms lifted into b), so that
+        # the Newton matrix is symmetric: CG and MUMPS's LDL^T apply.
+        self.ubar_function = df.Function(V)
+        selected = "std::abs(x[0]) <= tol" + (" || std::abs(x[0] - length) <= tol" if twisted else "")
+        fixed_boundary = df.CompiledSubDomain(selected, tol=BOUNDARY_TOLERANCE, length=LENGTH)
+        bc = df.DirichletBC(V, self.ubar_function, fixed_boundary, method="pointwise")
+        bc_dofs = np.sort(np.fromiter(bc.get_boundary_values().keys(), dtype=np.intc))
+        if not np.array_equal(bc_dofs, self.fixed_dofs):
+            raise RuntimeError("the DirichletBC selects other dofs than sinew's boundary test")
+        self.assembler = df.SystemAssembler(jacobian, residual, [bc])  # the forms compiled above (cached)
         self.assembly_s = 0.0
         self.nonfinite = False
 
         solver = df.NewtonSolver()
         prm = solver.parameters
-        prm["linear_solver"] = "mumps"           # direct LU through MUMPS (PETSc)
+        self.near_null_space = None
+        if args.linear_solver.startswith("mumps"):
+            prm["linear_solver"] = "mumps"       # direct LU (or LDL^T) through MUMPS (PETSc)
+            prm["lu_solver"]["symmetric"] = args.linear_solver == "mumps-ldlt"
+        else:
+            self._krylov(df, prm, args)
         prm["convergence_criterion"] = "residual"
         prm["relative_tolerance"] = args.rtol    # ||b||_2 <= rtol ||b_0||_2 (b_0: start of the step)
         prm["absolute_tolerance"] = args.atol    # or ||b||_2 <= atol
@@ -212,19 +228,40 @@ class Cantilever:
         self.solver = solver
         self.problem = self._nonlinear_problem()
 
+    def _krylov(self, df, prm, args):
+        """dolfin's Newton with a Krylov solve, `method-preconditioner`, to
+        ||b - A x|| <= krylov_rtol ||b|| (from zero, as sinew's CG), and the
+        AMG options sinew sets (solvers/linear/petsc_solver.cpp); GAMG also
+        gets the six rigid-body modes as its near-null space."""
+        method, preconditioner = args.linear_solver.split("-")
+        prm["linear_solver"] = method
+        prm["preconditioner"] = {"gamg": "petsc_amg", "hypre": "hypre_amg"}[preconditioner]
+        krylov = prm["krylov_solver"]
+        krylov["relative_tolerance"] = args.krylov_rtol
+        krylov["absolute_tolerance"] = 0.0
+        krylov["maximum_iterations"] = 10000
+        krylov["nonzero_initial_guess"] = False
+        krylov["error_on_nonconvergence"] = True  # an unconverged solve fails the attempt
+        options = {"gamg": {"pc_gamg_agg_nsmooths": 0, "pc_gamg_threshold": 0.02},
+                   "hypre": {"pc_hypre_boomeramg_coarsen_type": "HMIS", "pc_hypre_boomeramg_interp_type": "ext+i",
+                             "pc_hypre_boomeramg_P_max": 4, "pc_hypre_boomeramg_agg_nl": 1}}[preconditioner]
+        # The residual measured unpreconditioned, as in sinew's CG.
+        options["ksp_norm_type" if method == "cg" else "ksp_pc_side"] = "unpreconditioned" if method == "cg" else "right"
+        for key, value in options.items():
+            df.PETScOptions.set(key, value)
+        if preconditioner == "gamg":
+            self.near_null_space = rigid_body_modes(df, self.V, self.u)
+
     def _nonlinear_problem(self):
         df, outer = self.df, self
 
         class Problem(df.NonlinearProblem):
             def F(self, b, x):
                 t0 = time.perf_counter()
-                df.assemble(outer.residual, tensor=b)
-                # Dirichlet rows: b_i = x_i - ubar_i (0: u already holds ubar).
+                # Dirichlet rows b_i = x_i - ubar_i (0 once u holds ubar), and
+                # the fixed columns' contribution lifted into the free rows.
+                outer.assembler.assemble(b, x)
                 arr = b.get_local()
-                xa = x.get_local()
-                arr[outer.fixed_dofs] = xa[outer.fixed_dofs] - outer.ubar[outer.fixed_dofs]
-                b.set_local(arr)
-                b.apply("insert")
                 outer.assembly_s += time.perf_counter() - t0
                 if not np.all(np.isfinite(arr)):
                     # det F <= 0 somewhere (ln J undefined): this attempt fails.
@@ -233,8 +270,9 @@ class Cantilever:
 
             def J(self, A, x):
                 t0 = time.perf_counter()
-                df.assemble(outer.jacobian, tensor=A)
-                A.ident(outer.fixed_dofs)  # Dirichlet rows -> identity
+                outer.assembler.assemble(A)  # fixed rows and columns -> identity
+                if outer.near_null_space is not None:
+                    df.as_backend_type(A).set_near_nullspace(outer.near_null_space)
                 outer.assembly_s += time.perf_counter() - t0
 
         return Problem()
@@ -261,6 +299,8 @@ class Cantilever:
         script need 16 steps for the twisted cantilever."""
         self.load.assign(fraction)
         self.ubar = self.prescribed(fraction)
+        self.ubar_function.vector().set_local(self.ubar)
+        self.ubar_function.vector().apply("insert")
         if not jump_boundary:
             return
         vec = self.u.vector()
@@ -288,6 +328,36 @@ class Cantilever:
         return self.df.assemble(self.elastic_form) + self.df.assemble(self.gravity_form)
 
 
+def rigid_body_modes(df, V, u):
+    """The six rigid-body displacement fields of the reference configuration
+    (three translations, three rotations about the origin), orthonormalized:
+    the near-null space GAMG builds its coarse spaces from (sinew passes
+    the same to PETSc, solvers/linear/petsc_solver.cpp)."""
+    x = V.tabulate_dof_coordinates().reshape(-1, 3)
+    component = np.zeros(V.dim(), dtype=int)
+    for i in range(3):
+        component[V.sub(i).dofmap().dofs()] = i
+    modes = []
+    for i in range(3):
+        mode = np.zeros(V.dim())
+        mode[component == i] = 1.0
+        modes.append(mode)
+    for i, j in ((0, 1), (1, 2), (2, 0)):  # rotation in the (i, j) plane: (-x_j, x_i)
+        mode = np.zeros(V.dim())
+        mode[component == i] = -x[component == i, j]
+        mode[component == j] = x[component == j, i]
+        modes.append(mode)
+    vectors = []
+    for mode in modes:
+        vector = u.vector().copy()
+        vector.set_local(mode)
+        vector.apply("insert")
+        vectors.append(vector)
+    basis = df.VectorSpaceBasis(vectors)
+    basis.orthonormalize()
+    return basis
+
+
 def deformation_extremes(nodes, tets, u_nodes):
     """min det F and min singular value of F over the tets (F = Ds Dm^-1,
     constant per tet for P1). sinew's inversion threshold acts only where a
@@ -298,6 +368,14 @@ def deformation_extremes(nodes, tets, u_nodes):
     Ds = np.transpose(x[:, 1:, :] - x[:, :1, :], (0, 2, 1))
     F = Ds @ np.linalg.inv(Dm)
     return float(np.linalg.det(F).min()), float(np.linalg.svd(F, compute_uv=False).min())
+
+
+def error_reason(error):
+    """The line of a dolfin error box that says what went wrong ("*** Reason:
+    ..."), else the last line of the message."""
+    lines = [line.strip() for line in str(error).strip().splitlines() if line.strip()]
+    reasons = [line[len("*** Reason:"):].strip() for line in lines if line.startswith("*** Reason:")]
+    return reasons[0] if reasons else (lines[-1] if lines else "error")
 
 
 def run_attempt(scene, steps):
@@ -317,7 +395,7 @@ def run_attempt(scene, steps):
             if scene.nonfinite:
                 reason = "step %d: non-finite residual (inverted element)" % k
             else:
-                reason = "step %d: %s" % (k, str(error).strip().splitlines()[-1] if str(error).strip() else "error")
+                reason = "step %d: %s" % (k, error_reason(error))
             iterations.append(None)
             return False, iterations, time.perf_counter() - t0, scene.assembly_s, reason
         iterations.append(int(its))
@@ -333,11 +411,16 @@ def main():
                         help="c: 5c x c x c hex cells, 6 tets each (6: 6,480 tets, 12: 51,840, 19: 205,770)")
     parser.add_argument("--twisted", action="store_true", help="the twisted-cantilever scene")
     parser.add_argument("--max-steps", type=int, default=64,
-                        help="largest number of load steps tried (N = 1, 2, 4, ... up to this)")
+                        help="largest number of load steps tried (N = 1, 2, 3, ... up to this)")
     parser.add_argument("--min-steps", type=int, default=1,
                         help="smallest number of load steps tried (to skip attempts already seen to fail)")
     parser.add_argument("--save-displacement", metavar="PATH",
                         help="write the nodal displacement (N x 3, sinew's node order) as .npy")
+    parser.add_argument("--linear-solver", default="mumps",
+                        choices=("mumps", "mumps-ldlt", "cg-gamg", "cg-hypre", "gmres-gamg", "gmres-hypre"),
+                        help="Newton's linear solver: MUMPS LU or LDL^T, or a Krylov method with an AMG preconditioner")
+    parser.add_argument("--krylov-rtol", type=float, default=1e-6,
+                        help="Krylov solves: relative residual tolerance (l2, unpreconditioned for cg)")
     parser.add_argument("--rtol", type=float, default=1e-8, help="Newton relative residual tolerance (l2)")
     parser.add_argument("--atol", type=float, default=1e-10, help="Newton absolute residual tolerance (l2)")
     parser.add_argument("--max-newton", type=int, default=30, help="Newton iterations per load step")
@@ -399,32 +482,27 @@ def main():
         return result
 
     # The fewest equal steps with which dolfin's Newton converges: N = 1, 2,
-    # 4, … until one converges, then bisection between the last failure and
-    # it (assuming that more steps never hurt, which held in every run seen).
-    steps, lower = max(1, args.min_steps), 0
+    # 3, … until one converges. Every N is tried, because convergence is not
+    # monotone in N (6k straight beam: N = 15-18 and 20-23 converge, 19 and
+    # 24 invert an element in step 2 or 3), so doubling and bisection can
+    # settle on more steps than needed. A failing attempt mostly stops in its
+    # first steps, so the scan costs little beside the attempt that converges.
+    steps = max(1, args.min_steps)
     best = attempt(steps)
     while not best[0]:
-        if steps * 2 > args.max_steps:
+        if steps + 1 > args.max_steps:
             print(json.dumps({"scene": name, "tets": len(tets), "load_steps": None, "converged": False,
                               "failed_attempts_s": failed_s, "failed_attempts": failed}))
             return 3
-        lower, steps = steps, steps * 2
+        steps += 1
         best = attempt(steps)
-    last = steps
-    while steps - lower > 1:
-        last = (lower + steps) // 2
-        result = attempt(last)
-        if result[0]:
-            steps, best = last, result
-        else:
-            lower = last
-    if last != steps:
-        best = attempt(steps)  # again, so that the solution and timers kept are this attempt's
     ok, iterations, wall, assembly, reason = best
 
     # dolfin's own timer of the linear solves of the successful attempt
-    # (MUMPS analysis + factorization + solve, through PETSc).
-    lu_timing = scene.df.timing("LU solver", scene.df.TimingClear.keep)
+    # (MUMPS analysis + factorization + solve, or the Krylov solves with their
+    # preconditioner setups, through PETSc).
+    timer = "LU solver" if args.linear_solver.startswith("mumps") else "PETSc Krylov solver"
+    linear_timing = scene.df.timing(timer, scene.df.TimingClear.keep)
     u_nodes = scene.nodal_displacement()
     if args.save_displacement:
         np.save(args.save_displacement, u_nodes)
@@ -441,7 +519,8 @@ def main():
         "newton_iterations_per_step": iterations,
         "wall_s": wall,
         "assembly_s": assembly,
-        "lu_solve_s": lu_timing[1],
+        "linear_solver": args.linear_solver,
+        "linear_solve_s": linear_timing[1],
         "failed_attempts_s": failed_s,
         "failed_attempts": failed,
         "energy": scene.energy(),
@@ -457,6 +536,7 @@ def main():
         "form_compile_s": scene.compile_s,
         "end_path": args.end_path if args.twisted else None,
         "rtol": args.rtol,
+        "krylov_rtol": None if args.linear_solver.startswith("mumps") else args.krylov_rtol,
         "atol": args.atol,
         "dolfin": df.__version__,
         "petsc": ".".join(map(str, PETSc.Sys.getVersion())),

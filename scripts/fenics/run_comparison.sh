@@ -87,9 +87,10 @@ def read(path):
             return f.read().strip()
     except OSError:
         return "?"
-print("| scene | tets | ours: linear solver | ours: iterations | ours: wall s | FEniCS: load steps | FEniCS: Newton iterations | "
-      "FEniCS: wall s | FEniCS: failed attempts s | ratio FEniCS/ours | energy ours | energy FEniCS | load avg before ours / FEniCS |")
-print("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|")
+print("| scene | tets | ours: linear solver | ours: iterations | ours: wall s | FEniCS: linear solver | FEniCS: load steps | "
+      "FEniCS: Newton iterations | FEniCS: wall s | FEniCS: failed attempts s | ratio FEniCS/ours | energy ours | "
+      "energy FEniCS | load avg before ours / FEniCS |")
+print("|---|---:|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---|")
 def row(scene, solver, c):
     ours = load(os.path.join(out, "%s.%s.sinew.json" % (scene, solver)))
     fe = load(os.path.join(out, scene + ".fenics.json"))
@@ -104,11 +105,14 @@ def row(scene, solver, c):
         f_n, f_it, f_t, ratio, e_fe = "failed", "-", "-", "-", "-"
         f_fail = "%.2f" % fe["failed_attempts_s"] if fe else "-"
     e_ours = "%.12g" % ours["objective"] if ours else "-"
+    f_solver = fe.get("linear_solver", "-") if fe else "-"
+    if fe and fe.get("krylov_rtol"):
+        f_solver += " (rtol %g)" % fe["krylov_rtol"]
     tets = fe["tets"] if fe else 6 * 5 * int(c) ** 3
     loads = "%s / %s" % (read(os.path.join(out, "%s.%s.load-before-sinew" % (scene, solver))),
                          read(os.path.join(out, scene + ".load-before-fenics")))
-    return "| %s | %d | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
-        scene, tets, solver, o_it, o_t, f_n, f_it, f_t, f_fail, ratio, e_ours, e_fe, loads)
+    return "| %s | %d | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+        scene, tets, solver, o_it, o_t, f_solver, f_n, f_it, f_t, f_fail, ratio, e_ours, e_fe, loads)
 for c in cells:
     for variant in variants:
         scene = ("twisted-" if variant == "twisted" else "") + "cantilever-" + size[c]
@@ -116,7 +120,7 @@ for c in cells:
             print(row(scene, solver, c))
 print()
 print("ours: `sinew solve SCENE --solver projected-newton --option linear_solver=SOLVER`, wall = result time_s (the solver run; problem "
-      "construction excluded). FEniCS: wall of the successful load-stepping run (assembly + MUMPS solves), "
+      "construction excluded). FEniCS: wall of the successful load-stepping run (assembly + linear solves), "
       "mesh construction and form compilation excluded (JIT cache warmed first); failed attempts with fewer "
       "load steps timed separately. Raw outputs: %s" % out)
 EOF
