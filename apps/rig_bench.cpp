@@ -105,9 +105,9 @@ nlohmann::json iteration_cost(const RigFitCase& fit_case, int tets)
               << cell("%.3f", forward) << " (" << solves << " solves, " << cell("%.4f", forward / solves)
               << " s each) | " << J.cols() << " |\n"
               << std::flush;
-    (void)gradient;
     return {{"suite", "rig-iteration"}, {"tets", tets}, {"cold_solve_s", number(cold)}, {"warm_solve_s", number(warm_s)},
             {"warm_iterations", warm.inner.iterations}, {"factorization_and_adjoint_s", number(adjoint_with_factorization)},
+            {"adjoint_gradient_norm", number(gradient.norm())},
             {"forward_s", number(forward)}, {"forward_solves", solves}, {"parameters", J.cols()}};
 }
 
