@@ -4,6 +4,7 @@
 #include "sinew/core/threads.hpp"
 #include "sinew/solvers/linear/analysed_pattern.hpp"
 #include "sinew/solvers/linear/matrix_input.hpp"
+#include "sinew/solvers/linear/symmetric_csr.hpp"
 
 #include <petscksp.h>
 
@@ -146,8 +147,10 @@ bool petsc_running()
 }
 
 /// KSPCG preconditioned by an algebraic multigrid. The matrix is PETSc's AIJ
-/// on one process; its rows are set one by one, as a distributed assembly
-/// would set each rank's rows.
+/// on one process: its compressed-row structure is given once per sparsity
+/// pattern, then each matrix's values are written in place (a distributed
+/// assembly would give each rank its rows' structure the same way, with
+/// MatMPIAIJSetPreallocationCSR).
 class PetscCgSolver final : public LinearSolver {
 public:
     PetscCgSolver(PetscPreconditioner preconditioner, double tolerance, int max_iterations)
@@ -196,16 +199,16 @@ public:
         const SparseMatrix& lower = compressed(A, storage);
         const SingleThreadedBlas one_core;  // PETSc runs on one core
         try {
-            // PETSc's AIJ holds both triangles of the symmetric matrix.
-            const SparseMatrix full = lower.selfadjointView<Eigen::Lower>();
             const int block_size = usable_block_size(static_cast<int>(A.rows()));
             const bool same_matrix = pattern_.matches(lower) && block_size == matrix_block_size_;
             if (!same_matrix) {
-                create_matrix(full, block_size);
+                pattern_.forget();  // until the new matrix exists
+                csr_ = std::make_unique<SymmetricCsr>(lower);
+                create_matrix(block_size);
                 pattern_.remember(lower);
                 ++stats_.symbolic_analyses;
             }
-            set_values(full);
+            set_values(lower);
             attach_near_null_space();
             set_up_preconditioner(same_matrix && hierarchy_worked);
         } catch (const PetscFailure& failure) {
@@ -282,39 +285,35 @@ private:
         return block > 1 && n % block == 0 ? block : 1;
     }
 
-    /// A new AIJ matrix with the pattern of `full` preallocated row by row,
-    /// and the vectors that go with it.
-    void create_matrix(const SparseMatrix& full, int block_size)
+    /// A new AIJ matrix with csr_'s structure (both triangles: PETSc's AIJ
+    /// holds the full symmetric matrix), and the vectors that go with it.
+    void create_matrix(int block_size)
     {
         MatDestroy(&A_);
         VecDestroy(&x_);
         VecDestroy(&b_);
-        size_ = static_cast<int>(full.rows());
-        std::vector<PetscInt> row_counts(full.cols());
-        for (Eigen::Index j = 0; j < full.cols(); ++j)  // column j of a symmetric matrix is row j
-            row_counts[j] = full.outerIndexPtr()[j + 1] - full.outerIndexPtr()[j];
+        size_ = csr_->rows();
+        const std::vector<PetscInt> row_starts(csr_->row_starts().begin(), csr_->row_starts().end());
+        const std::vector<PetscInt> columns(csr_->columns().begin(), csr_->columns().end());
         check(MatCreate(PETSC_COMM_SELF, &A_), "MatCreate");
         check(MatSetSizes(A_, size_, size_, size_, size_), "MatSetSizes");
-        check(MatSetType(A_, MATAIJ), "MatSetType");
+        check(MatSetType(A_, MATSEQAIJ), "MatSetType");
         check(MatSetBlockSize(A_, block_size), "MatSetBlockSize");
-        check(MatSeqAIJSetPreallocation(A_, 0, row_counts.data()), "MatSeqAIJSetPreallocation");
+        check(MatSeqAIJSetPreallocationCSR(A_, row_starts.data(), columns.data(), nullptr),
+              "MatSeqAIJSetPreallocationCSR");
         check(MatSetOption(A_, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE), "MatSetOption");
         check(MatCreateVecs(A_, &x_, &b_), "MatCreateVecs");
         matrix_block_size_ = block_size;
     }
 
-    void set_values(const SparseMatrix& full)
+    /// The values of A (given by its lower triangle) written in place into
+    /// the AIJ arrays, in csr_'s order.
+    void set_values(const SparseMatrix& lower)
     {
-        for (Eigen::Index j = 0; j < full.cols(); ++j) {
-            const PetscInt row = static_cast<PetscInt>(j);
-            const int start = full.outerIndexPtr()[j];
-            const PetscInt count = full.outerIndexPtr()[j + 1] - start;
-            check(MatSetValues(A_, 1, &row, count, full.innerIndexPtr() + start, full.valuePtr() + start,
-                               INSERT_VALUES),
-                  "MatSetValues");
-        }
-        check(MatAssemblyBegin(A_, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
-        check(MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+        PetscScalar* values = nullptr;
+        check(MatSeqAIJGetArray(A_, &values), "MatSeqAIJGetArray");
+        csr_->fill(lower, values);
+        check(MatSeqAIJRestoreArray(A_, &values), "MatSeqAIJRestoreArray");
     }
 
     /// The near null space's vectors as the matrix's MatNullSpace (they are
@@ -385,6 +384,7 @@ private:
     double tolerance_;
     const int max_iterations_;
     NearNullSpace near_null_space_;
+    std::unique_ptr<SymmetricCsr> csr_;  ///< the full CSR structure of the current pattern
     Mat A_ = nullptr;
     Vec x_ = nullptr, b_ = nullptr;
     KSP ksp_ = nullptr;
