@@ -30,9 +30,10 @@ public:
 private:
     std::vector<int> row_starts_;
     std::vector<int> columns_;
-    /// Lower-triangle entry k (in `lower`'s storage order) goes to
-    /// below_[k] (row i, column j, i ≥ j) and, off the diagonal, to above_[k]
-    /// (row j, column i); −1 on the diagonal.
+    /// Entry k of `lower` (in its storage order), at row i and column j,
+    /// goes to below_[k] (row i, column j) when i ≥ j, and also to
+    /// above_[k] (row j, column i) when i > j. Both are −1 for an entry above
+    /// the diagonal (not read); above_[k] is −1 on the diagonal.
     std::vector<int> below_;
     std::vector<int> above_;
 };
