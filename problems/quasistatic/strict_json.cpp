@@ -102,6 +102,9 @@ private:
     bool open(nlohmann::json&& container)
     {
         std::string path = next_path();
+        if (levels_.size() >= kMaxJsonDepth)
+            throw InputError(document_.name + ": " + (path.empty() ? std::string("the document") : path) +
+                             ": nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
         levels_.push_back(Level{put(std::move(container)), std::move(path), ""});
         return true;
     }

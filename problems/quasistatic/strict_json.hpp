@@ -80,9 +80,15 @@ private:
     std::string path_;
 };
 
+/// The deepest nesting of objects and arrays a document may have. A scene
+/// needs four or five levels; the bound keeps a malformed file (100,000
+/// nested arrays) from exhausting memory and the stack (docs/scenes.md).
+constexpr size_t kMaxJsonDepth = 64;
+
 /// Parses JSON text; InputError "document: line L, column C: …" for a syntax
 /// error, "document: path: key 'k' appears twice" for a repeated key (which
-/// a plain parser would resolve silently by keeping one of the two).
+/// a plain parser would resolve silently by keeping one of the two), and
+/// "document: path: nested deeper than 64 levels" (kMaxJsonDepth).
 JsonDocument parse_json_text(const std::string& text, const std::string& document);
 
 } // namespace sinew
