@@ -3,6 +3,7 @@
 #include "sinew/runs/output_file.hpp"
 #include "sinew/runs/result_json.hpp"
 #include "sinew/runs/scene_runner.hpp"
+#include "sinew/runs/time_stepping.hpp"
 
 #include "sinew/core/input_error.hpp"
 #include "sinew/problems/builtin_problems.hpp"
@@ -11,6 +12,9 @@
 #include "sinew/problems/quasistatic/scene_reader.hpp"
 #include "sinew/solvers/solver.hpp"
 
+#include <atomic>
+#include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -22,6 +26,38 @@ namespace {
 bool is_scene_file(const std::string& problem)
 {
     return std::filesystem::path(problem).extension() == ".json";
+}
+
+std::atomic<bool> interrupt_requested{false};
+
+extern "C" void request_interrupt(int) { interrupt_requested = true; }
+
+/// Runs a scene stepped in time with one progress line per step on stderr
+/// (verbosity >= 1; the steps' own iteration tables from verbosity 2), and
+/// Ctrl-C ending the run after the current step with its output written.
+TimeSteppingOutcome run_time_stepping_with_progress(Scene& scene, SceneRunSettings settings)
+{
+    const int verbosity = settings.options.verbosity;
+    settings.options.verbosity = verbosity > 0 ? verbosity - 1 : 0;
+    const long long planned = scene.dynamics->num_steps();
+    TimeSteppingObserver observer;
+    if (verbosity > 0)
+        observer.on_step = [planned](const TimeStepRow& row, const TimeState&) {
+            if (row.step > 0)
+                std::fprintf(stderr, "sinew: step %d of %lld  t = %.6g s  %s in %d iterations  E = %.9g\n", row.step,
+                             planned, row.time, to_string(row.status).c_str(), row.iterations, row.total_energy);
+        };
+    observer.stop_requested = [] { return interrupt_requested.load(); };
+    interrupt_requested = false;
+    const auto previous = std::signal(SIGINT, request_interrupt);
+    try {
+        TimeSteppingOutcome outcome = run_time_stepping(scene, settings, observer);
+        std::signal(SIGINT, previous);
+        return outcome;
+    } catch (...) {
+        std::signal(SIGINT, previous);
+        throw;
+    }
 }
 
 } // namespace
@@ -90,6 +126,13 @@ void add_solve_command(CLI::App& app, int& exit_code)
             std::cerr << "sinew: note: " << note << "\n";
         for (const ConstraintSetRank& rank : constraint_ranks(scene))
             std::cerr << "sinew: note: " << describe(rank) << "\n";
+        if (scene.dynamics) {
+            const TimeSteppingOutcome stepped = run_time_stepping_with_progress(scene, run.settings);
+            if (!flags->json.empty())
+                write_text_file(flags->json, to_json(stepped.last).dump(2) + "\n");
+            exit_code = stepped.converged ? 0 : 3;
+            return;
+        }
         const SceneRunOutcome outcome = run_scene(scene, run.settings);
         if (!flags->json.empty())
             write_text_file(flags->json, to_json(outcome.last).dump(2) + "\n");

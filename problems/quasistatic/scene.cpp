@@ -22,12 +22,18 @@ Eigen::VectorXd PrescribedMotion::translation_at(double s, int dimension) const
     return center - map_at(s, dimension) * center + s * translation;
 }
 
-void Scene::apply_load_factor(double s)
+void Scene::apply_load_factor(double s) { apply_load_factors(s, s, 1.0); }
+
+void Scene::apply_load_factors(double s0, double s1, double w)
 {
     const int dimension = problem->potential().dimension();
-    for (size_t k = 0; k < motions.size(); ++k)
-        problem->set_affine_map(static_cast<int>(k), motions[k].map_at(s, dimension),
-                                motions[k].translation_at(s, dimension));
+    for (size_t k = 0; k < motions.size(); ++k) {
+        const PrescribedMotion& m = motions[k];
+        problem->set_affine_map(static_cast<int>(k),
+                                (1.0 - w) * m.map_at(s0, dimension) + w * m.map_at(s1, dimension),
+                                (1.0 - w) * m.translation_at(s0, dimension) + w * m.translation_at(s1, dimension));
+    }
+    const double s = (1.0 - w) * s0 + w * s1;  // the quantities linear in s
     if (gravity)
         gravity->set_scale(s);
     if (loads)

@@ -1,9 +1,12 @@
 #pragma once
 #include "sinew/energies/potentials/elastic_potential.hpp"
 #include "sinew/energies/potentials/gravity_potential.hpp"
+#include "sinew/energies/potentials/inertia_potential.hpp"
 #include "sinew/energies/potentials/point_load_potential.hpp"
 #include "sinew/mesh/mesh.hpp"
+#include "sinew/energies/potentials/stiffness_damping_potential.hpp"
 #include "sinew/problems/quasistatic/quasistatic_problem.hpp"
+#include "sinew/time/dynamics_settings.hpp"
 
 #include <Eigen/Core>
 
@@ -47,12 +50,13 @@ struct SceneSolverSettings {
 enum class VtuOutput {
     none,        ///< result.json only
     final,       ///< result.vtu: the final configuration (default)
-    every_step,  ///< also step_k.vtu after each load step
+    every_step,  ///< also step_k.vtu after each load step (time step: every `every`-th)
 };
 
 struct SceneOutput {
     std::string folder;  ///< resolved against the scene file's folder; empty: the CLI decides
     VtuOutput vtu = VtuOutput::final;
+    int every = 1;  ///< time stepping with every_step: a VTU every this many steps
 };
 
 /// A quasistatic scene built from its description (scene_reader.hpp): the
@@ -78,8 +82,23 @@ struct Scene {
     SceneOutput output;
     double size = 1.0;  ///< the diagonal of the rest mesh's bounding box, m
 
+    /// A scene with a "dynamics" object is integrated in time (runs/time_stepping.hpp):
+    /// its settings, the lumped node masses, and the step's inertia and
+    /// damping terms, which are among the problem's potentials (null when
+    /// the scene has no dynamics or no such damping).
+    std::optional<DynamicsSettings> dynamics;
+    Eigen::VectorXd node_masses;
+    std::shared_ptr<InertiaPotential> inertia;
+    std::shared_ptr<InertiaPotential> mass_damping;
+    std::shared_ptr<StiffnessDampingPotential> stiffness_damping;
+
     /// Sets every scaled quantity to its value at load factor s (above).
     void apply_load_factor(double s);
+    /// The same for forces that act between two load factors: every scaled
+    /// quantity is (1 − w)·(its value at s₀) + w·(its value at s₁), the
+    /// prescribed maps and translations included (a time step whose forces
+    /// act at its midpoint takes w = ½).
+    void apply_load_factors(double s0, double s1, double w);
     /// The nodes of every Dirichlet set, flagged: 1 prescribed, 0 free.
     Eigen::VectorXd fixed_flags() const;
 };

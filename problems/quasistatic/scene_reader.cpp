@@ -15,6 +15,7 @@
 #include "sinew/mesh/read_mesh.hpp"
 #include "sinew/mesh/rectangle_triangles.hpp"
 #include "sinew/mesh/tetrahedralize_surface.hpp"
+#include "sinew/problems/quasistatic/dynamics_section.hpp"
 #include "sinew/problems/quasistatic/node_selection.hpp"
 #include "sinew/problems/quasistatic/strict_json.hpp"
 
@@ -452,6 +453,38 @@ PrescribedMotion motion(const JsonCursor& b, int dimension)
     return out;
 }
 
+/// The "dynamics" object: the settings, the lumped masses (every density
+/// must be > 0: a node without mass has no inertia) and the step's inertia
+/// and Rayleigh damping terms, appended to the scene's potentials.
+void add_dynamics(const JsonCursor& d, Scene& scene, const std::vector<double>& densities,
+                  const JsonCursor& material_list, std::vector<std::shared_ptr<Potential>>& terms)
+{
+    const int dimension = static_cast<int>(scene.mesh.nodes.rows());
+    scene.dynamics = read_dynamics(d, dimension);
+    for (size_t g = 0; g < densities.size(); ++g)
+        if (!(densities[g] > 0.0))
+            material_list.fail("group '" + (g < scene.mesh.group_names.size() ? scene.mesh.group_names[g] : std::to_string(g)) +
+                               "' has density 0; a scene with dynamics needs a density > 0 (mass) on every material");
+    scene.node_masses = at_place(d, [&] { return lumped_masses(scene.mesh, densities); });
+    const DynamicsSettings& settings = *scene.dynamics;
+    const double largest_activation = scene.target_activations.size() > 0 ? scene.target_activations.maxCoeff() : 0.0;
+    for (const KeyframeCurve::Keyframe& k : settings.load_factor.keyframes())
+        if (largest_activation > 0.0 && (k.value < 0.0 || k.value * largest_activation > 1.0))
+            d.at("load_curve").fail("the load factor " + format_number(k.value) +
+                                    " takes an activation out of [0, 1] (largest activation " +
+                                    format_number(largest_activation) + ")");
+    scene.inertia = std::make_shared<InertiaPotential>("inertia", dimension, scene.node_masses);
+    terms.push_back(scene.inertia);
+    if (settings.mass_damping > 0.0) {
+        scene.mass_damping = std::make_shared<InertiaPotential>("mass damping", dimension, scene.node_masses);
+        terms.push_back(scene.mass_damping);
+    }
+    if (settings.stiffness_damping > 0.0) {
+        scene.stiffness_damping = std::make_shared<StiffnessDampingPotential>(scene.elastic, settings.stiffness_damping);
+        terms.push_back(scene.stiffness_damping);
+    }
+}
+
 std::string read_text_file(const std::string& path)
 {
     std::error_code ignored;
@@ -474,7 +507,7 @@ Scene parse_scene(const std::string& text, const std::string& document, const st
     const JsonDocument json = parse_json_text(text, document);
     const JsonCursor root(json);
     root.expect_object({"name", "description", "mesh", "materials", "gravity", "boundary", "loads", "obstacles",
-                        "constraints", "dirichlet", "load_steps", "solver", "output"});
+                        "constraints", "dirichlet", "load_steps", "solver", "output", "dynamics"});
     Scene scene;
     scene.name = root.has("name") ? root.at("name").string()
                                   : std::filesystem::path(document).stem().string();
@@ -591,6 +624,9 @@ Scene parse_scene(const std::string& text, const std::string& document, const st
         }
     }
 
+    if (auto d = root.find("dynamics"))
+        add_dynamics(*d, scene, densities, material_list, terms);
+
     std::vector<DirichletSet> sets;
     if (auto list = root.find("boundary")) {
         for (size_t i = 0; i < list->size(); ++i) {
@@ -622,8 +658,11 @@ Scene parse_scene(const std::string& text, const std::string& document, const st
         scene.constraints = scene_constraints(*list, scene, materials);
         options.constraints = scene.constraints;
     }
-    if (auto n = root.find("load_steps"))
+    if (auto n = root.find("load_steps")) {
         scene.load_steps = n->integer_in(1, 100000);
+        if (scene.dynamics)
+            n->fail("a scene with dynamics is stepped in time; its load factor over time is dynamics.load_curve");
+    }
 
     if (auto s = root.find("solver")) {
         s->expect_object({"name", "tolerance", "max_iterations", "options"});
@@ -638,7 +677,9 @@ Scene parse_scene(const std::string& text, const std::string& document, const st
             scene.solver.options = parameter_text(*v);
     }
     if (auto o = root.find("output")) {
-        o->expect_object({"folder", "vtu"});
+        o->expect_object({"folder", "vtu", "every"});
+        if (auto v = o->find("every"))
+            scene.output.every = v->integer_in(1, std::numeric_limits<int>::max());
         if (auto v = o->find("folder"))
             scene.output.folder = resolve_path(v->string(), base_folder);
         if (auto v = o->find("vtu")) {
