@@ -1,6 +1,7 @@
 #include "commands.hpp"
 
 #include "sinew/problems/builtin_problems.hpp"
+#include "sinew/problems/quasistatic/parts/scene_part.hpp"
 #include "sinew/solvers/solver.hpp"
 
 #include <iomanip>
@@ -47,8 +48,13 @@ void add_list_command(CLI::App& app, int& exit_code)
     CLI::App* command = app.add_subcommand("list", "list the built-in problems (by suite) and the solvers");
     auto solver = std::make_shared<std::string>();
     command->add_option("--solver", *solver, "list this solver's options: name, type, range, default, doc");
-    command->callback([&exit_code, solver] {
-        if (solver->empty())
+    auto scene_keys = std::make_shared<bool>(false);
+    command->add_flag("--scene-keys", *scene_keys,
+                      "list every key of a scene file, part by part: type, range or choices, default, doc (markdown)");
+    command->callback([&exit_code, solver, scene_keys] {
+        if (*scene_keys)
+            std::cout << scene_keys_markdown();
+        else if (solver->empty())
             list_everything();
         else
             list_solver(find_solver(*solver));

@@ -16,7 +16,7 @@ namespace {
 /// Newton, else augmented Lagrangian, whose subproblems projected Newton solves.
 std::string core_solver(const Scene& scene)
 {
-    return scene.solver.name == "projected-newton" ? "projected-newton" : "augmented-lagrangian";
+    return scene_solver_settings(scene).name == "projected-newton" ? "projected-newton" : "augmented-lagrangian";
 }
 
 /// The backend option that switches reuse for `solver` (nested for the outer loops).

@@ -117,7 +117,7 @@ void add_solve_command(CLI::App& app, int& exit_code)
             request.solver = flags->solver;
         // A scene file writes into its output folder (default <name>-output);
         // a built-in scene only where --output says.
-        request.folder = !flags->output.empty() || !scene_file || !scene.output.folder.empty()
+        request.folder = !flags->output.empty() || !scene_file || !scene_output_settings(scene).folder.empty()
                              ? flags->output
                              : scene.name + "-output";
         const ResolvedSceneRun run = resolve_scene_run(scene, request);

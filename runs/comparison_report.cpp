@@ -4,6 +4,7 @@
 #include "sinew/runs/gnuplot_plot.hpp"
 #include "sinew/runs/output_file.hpp"
 #include "sinew/runs/result_json.hpp"
+#include "sinew/solvers/solver.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -12,7 +13,15 @@
 namespace sinew {
 namespace {
 
-const char* const kKappaSolvers[] = {"relaxed-kkt", "penalty"};
+/// The solvers whose answer is a function of κ (Solver::fixed_kappa_options).
+std::vector<std::string> kappa_solvers()
+{
+    std::vector<std::string> names;
+    for (const auto& solver : all_solvers())
+        if (takes_kappa(*solver))
+            names.push_back(solver->name());
+    return names;
+}
 
 std::string statistic(const Result& result, const char* name)
 {
@@ -57,11 +66,11 @@ Sweep sweep_of(const Comparison& comparison, const std::string& solver)
 std::string sweep_lines(const Comparison& comparison)
 {
     std::string out;
-    for (const char* solver : kKappaSolvers) {
+    for (const std::string& solver : kappa_solvers()) {
         const Sweep sweep = sweep_of(comparison, solver);
         if (sweep.kappa.size() < 2)
             continue;
-        out += "- " + std::string(solver) + ": d log max|c| / d log κ = " + table_cell("%.3f", sweep.slope) +
+        out += "- " + solver + ": d log max|c| / d log κ = " + table_cell("%.3f", sweep.slope) +
                " fitted over κ = " + kappa_text(sweep.kappa.front()) + " … " + kappa_text(sweep.kappa.back()) +
                ", " + table_cell("%.3f", sweep.last_slope) + " between the two largest (−1: max |c| falls as 1/κ)" +
                "; distance to the reference " +
@@ -94,7 +103,7 @@ Plot kappa_plot(const Comparison& comparison, bool distance)
                                              : ": final constraint violation") +
                   " against kappa",
               "kappa", distance ? "max nodal distance to the reference" : "max |c|", true, true, false, {}};
-    for (const char* solver : kKappaSolvers) {
+    for (const std::string& solver : kappa_solvers()) {
         const Sweep sweep = sweep_of(comparison, solver);
         if (!sweep.kappa.empty())
             plot.series.push_back({solver, sweep.kappa, distance ? sweep.distance : sweep.violation});
@@ -138,7 +147,7 @@ nlohmann::json comparison_json(const Comparison& comparison)
                         {"reference_distance", number(run.reference_distance)},
                         {"result", to_json(run.result)}});
     nlohmann::json sweeps = nlohmann::json::object();
-    for (const char* solver : kKappaSolvers) {
+    for (const std::string& solver : kappa_solvers()) {
         const Sweep sweep = sweep_of(comparison, solver);
         if (sweep.kappa.empty())
             continue;
@@ -169,7 +178,7 @@ void draw_comparison_plots(const Comparison& comparison, const std::string& fold
     draw_plot(history_plot(comparison, &HistoryRow::dual_residual, "KKT residual (each solver's own measure)"),
               folder, "kkt_residual");
     bool sweep = false;
-    for (const char* solver : kKappaSolvers)
+    for (const std::string& solver : kappa_solvers())
         sweep = sweep || !kappa_sweep(comparison, solver).empty();
     // A plot this comparison does not draw must not survive from an earlier one in the folder.
     if (sweep)

@@ -34,33 +34,34 @@ ResolvedSceneRun resolve_scene_run(const Scene& scene, const SceneRunRequest& re
     SceneRunSettings& settings = resolved.settings;
     std::vector<std::string>& notes = resolved.notes;
     SolverOptions options = request.options;
-    settings.solver = request.solver.value_or(scene.solver.name);
-    const std::string source = scene.solver.source.empty() ? scene.name : scene.solver.source;
-    options.tolerance = request.tolerance.value_or(scene.solver.tolerance.value_or(options.tolerance));
-    if (request.tolerance && scene.solver.tolerance)
+    const SceneSolverSettings& solver = scene_solver_settings(scene);
+    settings.solver = request.solver.value_or(solver.name);
+    const std::string source = solver.source.empty() ? scene.name : solver.source;
+    options.tolerance = request.tolerance.value_or(solver.tolerance.value_or(options.tolerance));
+    if (request.tolerance && solver.tolerance)
         notes.push_back("tol " + format_number(*request.tolerance) + " overrides " + source + ".tol = " +
-                        format_number(*scene.solver.tolerance));
-    options.max_iterations = request.max_iterations.value_or(scene.solver.max_iterations.value_or(options.max_iterations));
-    if (request.max_iterations && scene.solver.max_iterations)
+                        format_number(*solver.tolerance));
+    options.max_iterations = request.max_iterations.value_or(solver.max_iterations.value_or(options.max_iterations));
+    if (request.max_iterations && solver.max_iterations)
         notes.push_back("max_iter " + std::to_string(*request.max_iterations) + " overrides " + source +
-                        ".max_iter = " + std::to_string(*scene.solver.max_iterations));
-    if (settings.solver == scene.solver.name) {
+                        ".max_iter = " + std::to_string(*solver.max_iterations));
+    if (settings.solver == solver.name) {
         SolverOptions scene_options = options;
-        scene_options.backend = scene.solver.options;
+        scene_options.backend = solver.options;
         try {
-            find_solver(scene.solver.name).check_options(scene_options);
+            find_solver(solver.name).check_options(scene_options);
         } catch (const InputError& e) {
             throw InputError(source + ": " + e.what());
         }
-        for (const auto& [key, value] : scene.solver.options)
+        for (const auto& [key, value] : solver.options)
             if (!options.backend.emplace(key, value).second)
                 notes.push_back("option " + key + "=" + options.backend.at(key) + " overrides " + source +
                                 ".options." + key + " = " + value);
     } else {
         std::string ignored;
-        for (const auto& [key, value] : scene.solver.options)
+        for (const auto& [key, value] : solver.options)
             ignored += (ignored.empty() ? "" : ", ") + key + "=" + value;
-        notes.push_back("solver " + settings.solver + " replaces the scene's " + scene.solver.name +
+        notes.push_back("solver " + settings.solver + " replaces the scene's " + solver.name +
                         (ignored.empty() ? "" : "; its options (" + ignored + ") are not passed to " + settings.solver));
     }
     settings.options = options;
@@ -68,8 +69,8 @@ ResolvedSceneRun resolve_scene_run(const Scene& scene, const SceneRunRequest& re
     if (request.load_steps && scene.load_steps != 1 && *request.load_steps != scene.load_steps)
         notes.push_back("load steps " + std::to_string(*request.load_steps) + " override the scene's " +
                         std::to_string(scene.load_steps));
-    settings.folder = !request.folder.empty() ? request.folder : scene.output.folder;
-    settings.vtu = scene.output.vtu;
+    settings.folder = !request.folder.empty() ? request.folder : scene_output_settings(scene).folder;
+    settings.vtu = scene_output_settings(scene).vtu;
     return resolved;
 }
 

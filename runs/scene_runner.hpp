@@ -1,5 +1,6 @@
 #pragma once
 #include "sinew/problems/quasistatic/scene.hpp"
+#include "sinew/runs/scene_run_settings.hpp"
 #include "sinew/solvers/result.hpp"
 #include "sinew/solvers/solver_options.hpp"
 

@@ -10,10 +10,10 @@ namespace sinew {
 
 /// Writes the scene's mesh at `configuration` (node-major, all coordinates)
 /// as a VTU file with the point and cell data of docs/scenes.md, "Output":
-/// displacement, force, fixed; group, activation, damage, fiber, stress_norm,
-/// and the inextensibility data of the scene's fiber constraint sets (with
-/// their rows of `multipliers`). `extra_point_data` adds arrays (a time
-/// step's velocity).
+/// displacement, force, fixed and group here, and whatever each potential
+/// and constraint set of the scene adds through its add_output_data hook
+/// (the sets with their rows of `multipliers`). `extra_point_data` adds
+/// arrays (a time step's velocity).
 void write_scene_vtu(const std::string& path, Scene& scene, const Eigen::VectorXd& configuration,
                      const Eigen::VectorXd& multipliers, const VtuArrays& extra_point_data = {});
 

@@ -11,12 +11,6 @@
 namespace sinew {
 namespace {
 
-/// The solvers whose answer is a function of κ: run once per κ.
-bool takes_kappa(const std::string& solver)
-{
-    return solver == "relaxed-kkt" || solver == "penalty";
-}
-
 } // namespace
 
 std::string kappa_text(double kappa)
@@ -99,13 +93,9 @@ SolverOptions strategy_options(const ComparedStrategy& strategy, const SolverOpt
     SolverOptions options = base;
     for (const auto& [key, value] : strategy.backend)
         options.backend[key] = value;
-    if (strategy.kappa) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%.17g", *strategy.kappa);
-        options.backend["kappa"] = text;
-        if (strategy.solver == "penalty")
-            options.backend["kappa_growth"] = "1";
-    }
+    if (strategy.kappa)
+        for (const auto& [key, value] : find_solver(strategy.solver).fixed_kappa_options(*strategy.kappa))
+            options.backend[key] = value;
     return options;
 }
 
@@ -122,7 +112,7 @@ std::vector<ComparedStrategy> comparison_strategies(const Nlp& nlp, const std::v
             refusals.push_back(name + ": " + *why);
             continue;
         }
-        if (!takes_kappa(name)) {
+        if (!takes_kappa(*solver)) {
             strategies.push_back({name, name, std::nullopt, {}, {}});
             continue;
         }

@@ -189,7 +189,7 @@ public:
     /// A VTU of step k when every_step asks for it.
     void step(int k, double time, const TimeState& state, const Eigen::VectorXd& multipliers)
     {
-        if (folder_.empty() || settings_.vtu != VtuOutput::every_step || k % scene_.output.every != 0)
+        if (folder_.empty() || settings_.vtu != VtuOutput::every_step || k % scene_output_settings(scene_).every != 0)
             return;
         const std::string name = "step_" + std::to_string(k) + ".vtu";
         write(name, state, multipliers);

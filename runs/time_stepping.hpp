@@ -56,7 +56,7 @@ struct TimeSteppingOutcome {
 /// with the settings' solver, and advances the integrator. Stops at the
 /// first step that does not converge. Writes into settings.folder (when not
 /// empty): result.json with one row per step, result.vtu at the end, and
-/// with VtuOutput::every_step step_k.vtu every scene.output.every steps
+/// with VtuOutput::every_step step_k.vtu every `every` steps of the scene's output
 /// (k = 0 included) listed with their times in result.pvd.
 ///
 /// InputError before anything is written for a scene without dynamics,

@@ -9,6 +9,8 @@
 #include "sinew/solvers/constrained/relaxed_kkt.hpp"
 #include "sinew/solvers/kkt_measures.hpp"
 #include "sinew/solvers/newton/projected_newton.hpp"
+
+#include <cstdio>
 #include "sinew/solvers/progress_log.hpp"
 
 #include <chrono>
@@ -51,6 +53,15 @@ const std::vector<std::unique_ptr<Solver>>& all_solvers()
     }();
     return solvers;
 }
+
+std::string option_text(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    return text;
+}
+
+bool takes_kappa(const Solver& solver) { return !solver.fixed_kappa_options(1.0).empty(); }
 
 const Solver& find_solver(const std::string& name)
 {

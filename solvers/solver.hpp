@@ -33,7 +33,20 @@ public:
     /// Runs the solve. Does not throw for a solve that fails to converge: the
     /// status says so. Throws InputError for invalid options.
     virtual Result run(Nlp& nlp, const SolverOptions& options) const = 0;
+    /// A strategy whose answer is a function of a stiffness κ (relaxed KKT,
+    /// penalty) gives the backend options that solve at that one κ;
+    /// comparisons run it once per κ. Empty for every other solver.
+    virtual std::map<std::string, std::string> fixed_kappa_options(double kappa) const
+    {
+        static_cast<void>(kappa);
+        return {};
+    }
 };
+
+/// The backend options text of a number, every digit kept.
+std::string option_text(double value);
+/// Whether `solver` declares fixed_kappa_options (any κ > 0 gives some).
+bool takes_kappa(const Solver& solver);
 
 /// Every solver sinew has, in a fixed order.
 const std::vector<std::unique_ptr<Solver>>& all_solvers();

@@ -1,6 +1,7 @@
 #pragma once
 #include "sinew/core/projection.hpp"
 #include "sinew/core/sparsity_pattern.hpp"
+#include "sinew/energies/output_arrays.hpp"
 
 #include <Eigen/Core>
 
@@ -35,6 +36,16 @@ public:
     /// term λᵢ∇²cᵢ is projected onto the PSD cone before the sum.
     virtual void hessian_values(ConstVectorRef x, ConstVectorRef lambda, Projection projection,
                                 VectorRef values) = 0;
+
+    /// Adds the set's own point and cell data at x to an output file, with
+    /// `multipliers` the λ of its rows (Ipopt's sign convention), or empty
+    /// when the solve gave none. Default: none.
+    virtual void add_output_data(ConstVectorRef x, ConstVectorRef multipliers, OutputArrays& arrays)
+    {
+        static_cast<void>(x);
+        static_cast<void>(multipliers);
+        static_cast<void>(arrays);
+    }
 };
 
 } // namespace sinew

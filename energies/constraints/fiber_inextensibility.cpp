@@ -152,4 +152,29 @@ void FiberInextensibility::hessian_values(ConstVectorRef, ConstVectorRef lambda,
     }
 }
 
+void FiberInextensibility::add_output_data(ConstVectorRef x, ConstVectorRef multipliers, OutputArrays& arrays)
+{
+    std::vector<int> rows(elements_.size());
+    for (size_t k = 0; k < rows.size(); ++k)
+        rows[k] = static_cast<int>(k);
+    add_element_data(x, multipliers, rows, arrays);
+}
+
+void FiberInextensibility::add_element_data(ConstVectorRef x, ConstVectorRef multipliers,
+                                            const std::vector<int>& row_of, OutputArrays& arrays)
+{
+    Eigen::VectorXd c(num_constraints());
+    values(x, c);  // c_e = a₀ᵀC_e a₀ − 1
+    Eigen::MatrixXd& flag = arrays.cell_array("inextensible", 1, 0.0);
+    Eigen::MatrixXd& value = arrays.cell_array("inextensibility_value", 1, 0.0);
+    Eigen::MatrixXd& multiplier = arrays.cell_array("inextensibility_multiplier", 1, 0.0);
+    for (size_t k = 0; k < elements_.size(); ++k) {
+        const int e = elements_[k];
+        flag(0, e) = 1.0;
+        value(0, e) = c[static_cast<Eigen::Index>(k)];
+        if (row_of[k] < multipliers.size())
+            multiplier(0, e) = multipliers[row_of[k]];
+    }
+}
+
 } // namespace sinew

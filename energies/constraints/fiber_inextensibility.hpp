@@ -60,6 +60,15 @@ public:
     /// under Projection::clamp.
     void hessian_values(ConstVectorRef x, ConstVectorRef lambda, Projection projection, VectorRef values) override;
 
+    /// Cell data: "inextensible" (1 on the listed elements), their own
+    /// a₀ᵀC a₀ − 1 ("inextensibility_value") and the multiplier of their row
+    /// ("inextensibility_multiplier"); 0 on other elements.
+    void add_output_data(ConstVectorRef x, ConstVectorRef multipliers, OutputArrays& arrays) override;
+    /// The same with the k-th listed element's multiplier at row row_of[k]
+    /// (the weak form's cell of the element).
+    void add_element_data(ConstVectorRef x, ConstVectorRef multipliers, const std::vector<int>& row_of,
+                          OutputArrays& arrays);
+
     ElementKind kind() const { return kind_; }
     int dimension() const { return dimension_; }
     const std::vector<int>& elements() const { return elements_; }

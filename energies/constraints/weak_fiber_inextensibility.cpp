@@ -113,4 +113,12 @@ void WeakFiberInextensibility::hessian_values(ConstVectorRef x, ConstVectorRef l
     per_element_->hessian_values(x, weights, projection, values);
 }
 
+void WeakFiberInextensibility::add_output_data(ConstVectorRef x, ConstVectorRef multipliers, OutputArrays& arrays)
+{
+    per_element_->add_element_data(x, multipliers, row_of_element_, arrays);
+    Eigen::MatrixXd& cell = arrays.cell_array("inextensibility_cell", 1, -1.0);
+    for (size_t k = 0; k < row_of_element_.size(); ++k)
+        cell(0, per_element_->elements()[k]) = row_of_element_[k];
+}
+
 } // namespace sinew

@@ -37,6 +37,10 @@ public:
     void hessian_values(ConstVectorRef x, ConstVectorRef lambda, Projection projection, VectorRef values) override;
 
     /// The constraint row, which is its grid cell z, of each listed element.
+    /// The per-element data of FiberInextensibility (each element with its
+    /// cell's multiplier λ_z) and "inextensibility_cell", the grid cell z of
+    /// each element (−1 elsewhere).
+    void add_output_data(ConstVectorRef x, ConstVectorRef multipliers, OutputArrays& arrays) override;
     const std::vector<int>& row_of_element() const { return row_of_element_; }
     /// The per-element constraints c_e = a₀ᵀC_e a₀ − 1 the rows sum.
     FiberInextensibility& per_element() { return *per_element_; }

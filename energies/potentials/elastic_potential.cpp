@@ -433,6 +433,21 @@ void ElasticPotential::add_activation_gradient(ConstVectorRef x, const std::vect
 
 Eigen::VectorXd ElasticPotential::stress_norms(ConstVectorRef x) const { return elements_->stress_norms(x); }
 
+void ElasticPotential::add_output_data(ConstVectorRef x, OutputArrays& arrays)
+{
+    const int count = num_elements();
+    Eigen::MatrixXd activations(1, count), damages(1, count), fibers(material_dimension(kind_), count);
+    for (int e = 0; e < count; ++e) {
+        activations(0, e) = activation(e);
+        damages(0, e) = damage(e);
+        fibers.col(e) = fiber(e);
+    }
+    arrays.cells["activation"] = activations;
+    arrays.cells["damage"] = damages;
+    arrays.cells["fiber"] = fibers;
+    arrays.cells["stress_norm"] = stress_norms(x).transpose();
+}
+
 void ElasticPotential::set_fiber(int element, const Eigen::VectorXd& fiber)
 {
     check_element(element, num_elements());

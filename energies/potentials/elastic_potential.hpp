@@ -69,6 +69,9 @@ public:
     /// ‖P(F_e)‖_F per element (Pa for tets and 2D triangles, N/m for
     /// membranes): the stress invariant the VTU output shows.
     Eigen::VectorXd stress_norms(ConstVectorRef x) const;
+    /// Cell data: "activation", "damage", "fiber" (material space; for
+    /// membranes the element's rest frame) and "stress_norm" (‖P‖_F).
+    void add_output_data(ConstVectorRef x, OutputArrays& arrays) override;
     /// Fiber a₀ of an element in material space, normalized here: a
     /// material_dimension vector, or for triangles in 3D also a direction in
     /// space, projected onto the element's rest plane. InputError for a zero,

@@ -1,5 +1,6 @@
 #pragma once
 #include "sinew/energies/models/constitutive_model.hpp"
+#include "sinew/energies/output_arrays.hpp"
 
 #include <Eigen/Core>
 
@@ -55,6 +56,15 @@ public:
     /// `slots` is HessianPattern::slots(hessian_stencils()). No allocation.
     virtual void add_hessian(ConstVectorRef x, Projection projection, const StencilSlots& slots,
                              VectorRef values) = 0;
+
+    /// Adds the potential's own point and cell data at x to an output file
+    /// (the elastic potential: activation, damage, fiber, stress norm).
+    /// Default: none.
+    virtual void add_output_data(ConstVectorRef x, OutputArrays& arrays)
+    {
+        static_cast<void>(x);
+        static_cast<void>(arrays);
+    }
 };
 
 } // namespace sinew

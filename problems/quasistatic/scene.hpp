@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include <any>
 #include <map>
 #include <memory>
 #include <optional>
@@ -35,30 +36,6 @@ struct PrescribedMotion {
     Eigen::VectorXd translation_at(double s, int dimension) const;
 };
 
-/// How a scene asks to be solved. Plain data: problems/ knows no solver; the
-/// CLI turns this into solver options (unset fields keep the solver's
-/// defaults or the command line's values).
-struct SceneSolverSettings {
-    std::string name = "projected-newton";
-    std::optional<double> tolerance;
-    std::optional<int> max_iterations;
-    std::map<std::string, std::string> options;  ///< backend options, as text
-    std::string source;  ///< where these settings are written ("scene.json: solver"), for messages
-};
-
-/// Which VTU files a solve writes into the output folder.
-enum class VtuOutput {
-    none,        ///< result.json only
-    final,       ///< result.vtu: the final configuration (default)
-    every_step,  ///< also step_k.vtu after each load step (time step: every `every`-th)
-};
-
-struct SceneOutput {
-    std::string folder;  ///< resolved against the scene file's folder; empty: the CLI decides
-    VtuOutput vtu = VtuOutput::final;
-    int every = 1;  ///< time stepping with every_step: a VTU every this many steps
-};
-
 /// A quasistatic scene built from its description (scene_reader.hpp): the
 /// mesh, the potentials, the NLP, and what a load factor s scales. Load
 /// stepping solves at s = k/N, k = 1…N, each step starting from the previous
@@ -78,8 +55,9 @@ struct Scene {
     std::vector<PrescribedMotion> motions;         ///< one per Dirichlet set of `problem`
     Eigen::VectorXd target_activations;            ///< α_e at s = 1, per element
     int load_steps = 1;                            ///< N
-    SceneSolverSettings solver;
-    SceneOutput output;
+    /// What the run parts (runs/: "solver", "output") read, by their key;
+    /// problems/ knows neither their types nor how a scene is run.
+    std::map<std::string, std::any> run_settings;
     double size = 1.0;  ///< the diagonal of the rest mesh's bounding box, m
 
     /// A scene with a "dynamics" object is integrated in time (runs/time_stepping.hpp):

@@ -137,15 +137,18 @@ void JsonCursor::fail(const std::string& message) const { throw InputError(where
 
 void JsonCursor::expect_object(std::initializer_list<const char*> allowed) const
 {
+    expect_object(std::vector<std::string>(allowed.begin(), allowed.end()));
+}
+
+void JsonCursor::expect_object(const std::vector<std::string>& allowed) const
+{
     if (!value_->is_object())
         fail("expected an object");
     for (const auto& item : value_->items()) {
-        const bool known = std::any_of(allowed.begin(), allowed.end(),
-                                       [&](const char* key) { return item.key() == key; });
-        if (!known) {
+        if (std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end()) {
             std::string valid;
-            for (const char* key : allowed)
-                valid += std::string(valid.empty() ? "" : ", ") + key;
+            for (const std::string& key : allowed)
+                valid += (valid.empty() ? "" : ", ") + key;
             throw InputError(where() + (path_.empty() ? ": " : ".") + item.key() + ": unknown key; valid keys: " +
                              valid);
         }

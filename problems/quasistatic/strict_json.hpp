@@ -13,6 +13,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace sinew {
 
@@ -42,6 +43,7 @@ public:
 
     /// InputError unless the value is an object whose keys are all in `allowed`.
     void expect_object(std::initializer_list<const char*> allowed) const;
+    void expect_object(const std::vector<std::string>& allowed) const;
     bool has(const std::string& key) const;
     /// The member `key` of an object; InputError when missing.
     JsonCursor at(const std::string& key) const;

@@ -208,6 +208,11 @@ public:
     {
         return OuterLoop(nlp, options, read_settings(name(), declared_options(), options, false), name()).run();
     }
+    /// κ held fixed: no continuation (kappa_growth 1).
+    std::map<std::string, std::string> fixed_kappa_options(double kappa) const override
+    {
+        return {{"kappa", option_text(kappa)}, {"kappa_growth", "1"}};
+    }
 };
 
 class AugmentedLagrangian final : public Solver {

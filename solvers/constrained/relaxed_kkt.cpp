@@ -196,6 +196,10 @@ public:
     std::vector<OptionDeclaration> declared_options() const override { return relaxed_kkt_options(); }
     std::optional<std::string> refusal(const Nlp& nlp) const override { return refuse_inequalities(name(), nlp); }
     void check_options(const SolverOptions& options) const override { read_settings(options); }
+    std::map<std::string, std::string> fixed_kappa_options(double kappa) const override
+    {
+        return {{"kappa", option_text(kappa)}};
+    }
     Result run(Nlp& nlp, const SolverOptions& options) const override
     {
         return RelaxedKktRun(nlp, options, read_settings(options)).run();

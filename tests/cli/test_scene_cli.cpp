@@ -262,3 +262,13 @@ TEST_CASE("the VTU output of a weak-form scene gives each element its own value,
     for (int m : members)
         CHECK(m == 576 / 18);  // 6 × 3 cells of 4 × 4 rectangles, 2 triangles each
 }
+
+TEST_CASE("sinew list --scene-keys prints every declared key, and docs/scenes.md holds the same table")
+{
+    const Run run = run_sinew("list --scene-keys");
+    REQUIRE(run.exit_code == 0);
+    CHECK(run.out.find("| `dynamics.time_step` | number | (0, inf) |") != std::string::npos);
+    CHECK(run.out.find("| `solver` | run | no |") != std::string::npos);
+    const std::string docs = slurp(std::string(SINEW_SOURCE_DIR) + "/docs/scenes.md");
+    CHECK(docs.find(run.out) != std::string::npos);  // regenerate: sinew list --scene-keys
+}

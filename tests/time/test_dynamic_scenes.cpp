@@ -92,7 +92,7 @@ TEST_CASE("dynamic scenes: result.json rows, VTU files with velocity and the Par
     SceneRunSettings settings;
     settings.solver = "projected-newton";
     settings.folder = folder.string();
-    settings.vtu = scene.output.vtu;
+    settings.vtu = scene_output_settings(scene).vtu;
     const TimeSteppingOutcome outcome = run_time_stepping(scene, settings);
     REQUIRE(outcome.converged);
 

@@ -1,0 +1,82 @@
+#include "sinew/problems/quasistatic/parts/scene_reading.hpp"
+
+#include "sinew/problems/quasistatic/node_selection.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <limits>
+
+namespace sinew {
+namespace {
+
+NodeSelection node_selection(const JsonCursor& s, int dimension)
+{
+    s.expect_object({"all", "nodes", "box", "plane", "half_space", "group"});
+    if (s.keys().size() != 1)
+        s.fail("expected exactly one of all, nodes, box, plane, half_space, group");
+    if (auto all = s.find("all")) {
+        if (!all->boolean())
+            all->fail("must be true");
+        return AllNodes{};
+    }
+    if (auto list = s.find("nodes")) {
+        NodeList out;
+        for (size_t i = 0; i < list->size(); ++i)
+            out.nodes.push_back((*list)[i].integer_in(0, std::numeric_limits<int>::max()));
+        return out;
+    }
+    if (auto box = s.find("box")) {
+        box->expect_object({"lower", "upper"});
+        return NodesInBox{box->at("lower").vector(dimension), box->at("upper").vector(dimension)};
+    }
+    const bool on_plane = s.has("plane");
+    if (on_plane || s.has("half_space")) {
+        const JsonCursor p = s.at(on_plane ? "plane" : "half_space");
+        p.expect_object({"point", "normal"});
+        const Eigen::VectorXd point = p.at("point").vector(dimension), normal = p.at("normal").vector(dimension);
+        if (on_plane)
+            return NodesOnPlane{point, normal};
+        return NodesInHalfSpace{point, normal};
+    }
+    return NodesOfGroup{s.at("group").string()};
+}
+
+} // namespace
+
+std::string resolve_path(const std::string& path, const std::string& base_folder)
+{
+    const std::filesystem::path p(path);
+    if (p.is_absolute() || base_folder.empty())
+        return path;
+    return (std::filesystem::path(base_folder) / p).string();
+}
+
+std::vector<int> selected_nodes(const JsonCursor& s, const Mesh& mesh, double tolerance)
+{
+    const NodeSelection selection = node_selection(s, static_cast<int>(mesh.nodes.rows()));
+    return at_place(s, [&] { return select_nodes(mesh, selection, tolerance); });
+}
+
+ParameterText parameter_text(const JsonCursor& p)
+{
+    ParameterText text;
+    for (const std::string& key : p.keys()) {
+        const JsonCursor value = p.at(key);
+        text[key] = value.is_string() ? value.string() : value.number_text();
+    }
+    return text;
+}
+
+int group_index(const JsonCursor& where, const Mesh& mesh, const std::string& name)
+{
+    const auto found = std::find(mesh.group_names.begin(), mesh.group_names.end(), name);
+    if (found == mesh.group_names.end()) {
+        std::string names;
+        for (const auto& g : mesh.group_names)
+            names += (names.empty() ? "" : ", ") + g;
+        where.fail("the mesh has no group '" + name + "'; its groups: " + names);
+    }
+    return static_cast<int>(found - mesh.group_names.begin());
+}
+
+} // namespace sinew

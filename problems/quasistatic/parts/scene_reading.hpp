@@ -1,0 +1,39 @@
+#pragma once
+// Helpers the scene parts share: error places, paths, node selections,
+// parameter text and group names.
+#include "sinew/core/input_error.hpp"
+#include "sinew/energies/models/model_parameters.hpp"
+#include "sinew/mesh/mesh.hpp"
+#include "sinew/problems/quasistatic/strict_json.hpp"
+
+#include <string>
+#include <vector>
+
+namespace sinew {
+
+/// Runs `work`, prefixing any InputError it throws with the cursor's place.
+template <typename Work>
+auto at_place(const JsonCursor& cursor, const Work& work) -> decltype(work())
+{
+    try {
+        return work();
+    } catch (const InputError& e) {
+        throw InputError(cursor.where() + ": " + e.what());
+    }
+}
+
+/// `path` resolved against `base_folder` when relative.
+std::string resolve_path(const std::string& path, const std::string& base_folder);
+
+/// The nodes a selection object picks ({"all"}, {"nodes"}, {"box"},
+/// {"plane"}, {"half_space"}, {"group"}; docs/scenes.md), within
+/// `tolerance` of planes and boxes. InputError when it picks none.
+std::vector<int> selected_nodes(const JsonCursor& s, const Mesh& mesh, double tolerance);
+
+/// An object of parameters as text, numbers as written.
+ParameterText parameter_text(const JsonCursor& p);
+
+/// The index of the mesh group called `name`; an error at `where` listing the groups otherwise.
+int group_index(const JsonCursor& where, const Mesh& mesh, const std::string& name);
+
+} // namespace sinew
