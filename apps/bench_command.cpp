@@ -1,5 +1,6 @@
 #include "cli_options.hpp"
 #include "commands.hpp"
+#include "dynamics_bench.hpp"
 #include "reuse_bench.hpp"
 #include "rig_bench.hpp"
 #include "strategies_bench.hpp"
@@ -38,6 +39,8 @@ const char* const kStrategiesSuite = "strategies";
 const char* const kReuseSuite = "reuse";
 /// The suite of rig fits on generated faces (rig_bench.hpp).
 const char* const kRigSuite = "rig";
+/// The suite of scenes stepped in time, each under every integrator (dynamics_bench.hpp).
+const char* const kDynamicsSuite = "dynamics";
 
 struct BenchFlags {
     std::string suite = "all";
@@ -319,6 +322,21 @@ void add_bench_command(CLI::App& app, int& exit_code)
                 builtin_scene_text(name);  // scenes only: InputError naming the valid ones
             nlohmann::json runs = nlohmann::json::array();
             const bool converged = run_reuse_bench(flags->problems, options, runs);
+            if (!flags->json.empty())
+                write_text_file(flags->json, nlohmann::json{{"suite", flags->suite}, {"runs", runs}}.dump(2) + "\n");
+            exit_code = converged ? 0 : 3;
+            return;
+        }
+        if (flags->suite == kDynamicsSuite) {
+            if (flags->solvers.size() > 1)
+                throw InputError("suite dynamics runs one solver (the scene's, or one --solver)");
+            for (const auto& name : flags->problems)
+                if (!builtin_scene_file(name).dynamic)
+                    throw InputError("'" + name + "' is not a scene of suite dynamics");
+            const std::optional<std::string> solver =
+                flags->solvers.empty() ? std::nullopt : std::optional<std::string>(flags->solvers.front());
+            nlohmann::json runs = nlohmann::json::array();
+            const bool converged = run_dynamics_bench(flags->problems, solver, options, runs);
             if (!flags->json.empty())
                 write_text_file(flags->json, nlohmann::json{{"suite", flags->suite}, {"runs", runs}}.dump(2) + "\n");
             exit_code = converged ? 0 : 3;

@@ -78,7 +78,7 @@ SceneRunOutcome run_scene(Scene& scene, const SceneRunSettings& settings)
 {
     if (scene.dynamics) {
         const TimeSteppingOutcome stepped = run_time_stepping(scene, settings);
-        return {stepped.converged, stepped.last, stepped.total_iterations, stepped.total_time_s};
+        return {stepped.converged, stepped.run, stepped.total_iterations, stepped.total_time_s};
     }
     // Every input is checked before the output folder is made.
     check_solve(*scene.problem, settings.solver, settings.options);

@@ -57,7 +57,8 @@ ResolvedSceneRun resolve_scene_run(const Scene& scene, const SceneRunRequest& re
 /// reached. With an empty folder nothing is written. The one way a scene is
 /// run: the CLI's solve and bench and the tests call it. A scene with
 /// "dynamics" is stepped in time instead (run_time_stepping,
-/// time_stepping.hpp): `last` is then its last step's solve.
+/// time_stepping.hpp): `last` is then the whole run as one result
+/// (TimeSteppingOutcome::run), so comparisons and benches see every step.
 struct SceneRunOutcome {
     bool converged = false;  ///< every load step converged
     Result last;             ///< the last step's result

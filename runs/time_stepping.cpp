@@ -248,6 +248,42 @@ private:
     std::vector<PvdEntry> collection_;
 };
 
+/// Adds a step's solve to the whole run's result.
+void add_step(Result& run, const Result& step, const TimeStepRow& row, double elapsed_s)
+{
+    run.iterations += step.iterations;
+    run.function_evaluations += step.function_evaluations;
+    if (step.linear_solves >= 0)
+        run.linear_solves = std::max(0, run.linear_solves) + step.linear_solves;
+    run.time_s += step.time_s;
+    for (const auto& [key, value] : step.statistics)
+        run.statistics[key] += value;
+    run.constraint_violation = std::max(run.constraint_violation, step.constraint_violation);
+    run.kkt_residual = std::max(run.kkt_residual, step.kkt_residual);
+    HistoryRow history;
+    history.iteration = row.step;
+    history.objective = row.total_energy;
+    history.constraint_violation = step.constraint_violation;
+    history.dual_residual = step.kkt_residual;
+    history.time_s = elapsed_s;
+    run.history.push_back(history);
+}
+
+/// The last step's x and multipliers on the whole run, and how it ended.
+void finish_run(Result& run, const Result& last, const TimeSteppingOutcome& outcome, const std::string& stopped)
+{
+    run.solver = last.solver;
+    run.problem = last.problem;
+    run.x = last.x;
+    run.constraint_multipliers = last.constraint_multipliers;
+    run.bound_multipliers_lower = last.bound_multipliers_lower;
+    run.bound_multipliers_upper = last.bound_multipliers_upper;
+    run.multipliers_estimated = last.multipliers_estimated;
+    run.objective = last.objective;
+    run.status = outcome.converged ? Status::converged : outcome.interrupted ? Status::user_stop : last.status;
+    run.message = outcome.converged ? "every time step converged" : stopped;
+}
+
 } // namespace
 
 TimeSteppingOutcome run_time_stepping(Scene& scene, const SceneRunSettings& settings,
@@ -286,6 +322,9 @@ TimeSteppingOutcome run_time_stepping(Scene& scene, const SceneRunSettings& sett
     const bool set_target = declares_gradient_target(settings.solver) &&
                             settings.options.backend.count("gradient_target") == 0;
     SolverOptions step_options = settings.options;
+    // A solver that keeps state across solves (projected Newton: its
+    // factorization's symbolic analysis) keeps it from step to step.
+    step_options.memory = std::make_shared<SolverMemory>();
     double hessian_diagonal = 0.0;
     std::string stopped;
     for (long long k = 1; k <= n; ++k) {
@@ -322,6 +361,7 @@ TimeSteppingOutcome run_time_stepping(Scene& scene, const SceneRunSettings& sett
         scene.apply_load_factor(d.load_factor.at(t1));  // energies at tₙ₊₁'s load factor
         measure(scene, outcome.state, initial.x, dimension, row);
         outcome.steps.push_back(row);
+        add_step(outcome.run, result, row, outcome.total_time_s);
         output.step(static_cast<int>(k), t1, outcome.state, result.constraint_multipliers);
         if (observer.on_step)
             observer.on_step(row, outcome.state);
@@ -336,6 +376,7 @@ TimeSteppingOutcome run_time_stepping(Scene& scene, const SceneRunSettings& sett
         }
     }
     outcome.converged = stopped.empty();
+    finish_run(outcome.run, outcome.last, outcome, stopped);
     output.finish(outcome, stopped, *integrator);
     return outcome;
 }

@@ -44,6 +44,13 @@ struct TimeSteppingOutcome {
     std::vector<TimeStepRow> steps;  ///< step 0 (t = 0) first
     TimeState state;                 ///< at the last step taken
     Result last;                     ///< the last step's solve
+    /// The whole run as one result, for comparisons and benches: the last
+    /// step's x, multipliers and status (converged only when the run is),
+    /// iterations, evaluations, linear solves, time and statistics summed
+    /// over the steps, the largest constraint violation and KKT residual of
+    /// any step, and one history row per step (iteration = step, objective =
+    /// total energy, the step's violation and KKT residual, the run's time).
+    Result run;
     int total_iterations = 0;
     double total_time_s = 0.0;
 };

@@ -4,12 +4,22 @@
 #include <functional>
 #include <iosfwd>
 #include <map>
+#include <memory>
 #include <string>
 
 namespace sinew {
 
 /// The largest verbosity: 2 is every backend's own output.
 inline constexpr int kMaxVerbosity = 2;
+
+/// What a solver may keep from one solve to the next of the same NLP (the
+/// time steps of a run): the caller hands every solve the same holder; a
+/// solver that keeps something stores it under its own `kind` and takes it
+/// back only when the kind matches. Solvers that keep nothing ignore it.
+struct SolverMemory {
+    std::string kind;
+    std::shared_ptr<void> state;
+};
 
 /// Options common to every solver, plus backend options by name.
 ///
@@ -38,6 +48,8 @@ struct SolverOptions {
     /// Options passed through by name to the backend (Ipopt options, NLopt
     /// settings). Values are text; the backend parses and checks them.
     std::map<std::string, std::string> backend;
+    /// Null: every solve starts afresh (the default).
+    std::shared_ptr<SolverMemory> memory;
 };
 
 /// Throws InputError naming the first invalid common option (non-positive

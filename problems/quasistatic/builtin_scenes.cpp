@@ -22,7 +22,9 @@ std::vector<BuiltinProblem> quasistatic_scenes()
         {"twisted-cantilever-206k", "quasistatic-large"}, {"inextensible-plate", "inextensibility"},
         {"locking-block", "inextensibility"},       {"helical-block-1k", "inextensibility"},
         {"helical-block-3k", "inextensibility"},    {"helical-block-6k", "inextensibility"},
-        {"draped-sheet", "inextensibility"}};
+        {"draped-sheet", "inextensibility"},       {"spindle-contraction", "dynamics"},
+        {"cantilever-6k-release", "dynamics"},      {"curtain-swing", "dynamics"},
+        {"spinning-block", "dynamics"},             {"helical-block-release", "dynamics"}};
     std::vector<BuiltinProblem> out;
     for (const auto& [name, suite] : scenes) {
         // The description is read from the file once, here; make() reads it again.

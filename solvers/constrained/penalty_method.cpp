@@ -92,6 +92,7 @@ Result OuterLoop::solve_subproblem(double kappa, int outer)
         row.outer_iteration = outer;
     };
     SolverOptions inner_options = options_;
+    inner_options.memory = nullptr;  // each subproblem starts afresh (its κ or λ moved)
     inner_options.max_iterations = std::max(1, options_.max_iterations - total_.iterations);
     return run_projected_newton(function_, inner_options, inner, name_);
 }

@@ -29,19 +29,27 @@ void NewtonRecorder::record(int iteration, double objective, double violation, d
     log_.row(row);
 }
 
+void NewtonRecorder::set_baseline(const RegularizedFactorization& factorization)
+{
+    baseline_ = {factorization.solver().stats(), factorization.factorizations(), factorization.factorization_seconds(),
+                 factorization.solve_seconds()};
+}
+
 Result NewtonRecorder::finish(Status status, const std::string& message, const Eigen::VectorXd& x,
                               const RegularizedFactorization& factorization)
 {
+    const LinearSolverStats& stats = factorization.solver().stats();
     result_.status = status;
     result_.message = message;
     result_.x = x;
-    result_.linear_solves = factorization.solver().stats().solves;
+    result_.linear_solves = stats.solves - baseline_.stats.solves;
     result_.statistics["assembly_s"] += assembly_s_;
-    result_.statistics["factorization_s"] += factorization.factorization_seconds();
-    result_.statistics["linear_solve_s"] += factorization.solve_seconds();
-    result_.statistics["symbolic_analyses"] += factorization.solver().stats().symbolic_analyses;
-    result_.statistics["factorizations"] += factorization.factorizations();
-    result_.statistics["linear_iterations"] += static_cast<double>(factorization.solver().stats().total_iterations);
+    result_.statistics["factorization_s"] += factorization.factorization_seconds() - baseline_.factorization_s;
+    result_.statistics["linear_solve_s"] += factorization.solve_seconds() - baseline_.solve_s;
+    result_.statistics["symbolic_analyses"] += stats.symbolic_analyses - baseline_.stats.symbolic_analyses;
+    result_.statistics["factorizations"] += factorization.factorizations() - baseline_.factorizations;
+    result_.statistics["linear_iterations"] +=
+        static_cast<double>(stats.total_iterations - baseline_.stats.total_iterations);
     return result_;
 }
 

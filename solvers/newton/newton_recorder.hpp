@@ -35,6 +35,9 @@ public:
 
     /// The Result: status, message, x, multipliers (empty: solve() estimates
     /// them), and the linear-algebra counters and times of `factorization`.
+    /// Counts of `factorization` from an earlier solve (a factorization kept
+    /// across solves, SolverMemory): finish() reports only this solve's.
+    void set_baseline(const RegularizedFactorization& factorization);
     Result finish(Status status, const std::string& message, const Eigen::VectorXd& x,
                   const RegularizedFactorization& factorization);
 
@@ -43,6 +46,13 @@ private:
     Clock::time_point start_;
     Clock::time_point assembly_start_;
     double assembly_s_ = 0.0;
+    /// The factorization's counts when this solve began (set_baseline).
+    struct Baseline {
+        LinearSolverStats stats;
+        int factorizations = 0;
+        double factorization_s = 0.0;
+        double solve_s = 0.0;
+    } baseline_;
     ProgressLog log_;
     std::function<void(HistoryRow&)> annotate_;
     Result result_;

@@ -8,6 +8,8 @@
 #include <Eigen/Geometry>
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include <string>
 
 using namespace sinew;
@@ -219,7 +221,10 @@ TEST_CASE("every built-in scene file parses")
             continue;  // large: built by the bench, same format as their 6k siblings
         CHECK_NOTHROW(parse_scene(file.text, file.name));
     }
-    CHECK(builtin_scene_files().size() == 15);
+    // 15 quasistatic scenes of scenes/ and 5 stepped in time of scenes/dynamics/
+    CHECK(builtin_scene_files().size() == 20);
+    CHECK(std::count_if(builtin_scene_files().begin(), builtin_scene_files().end(),
+                        [](const auto& file) { return file.dynamic; }) == 5);
 }
 
 TEST_CASE("bad scene input gives one InputError naming the document and the JSON path")

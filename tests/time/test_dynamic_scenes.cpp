@@ -4,6 +4,8 @@
 #include "time/dynamic_scene.hpp"
 
 #include "sinew/core/input_error.hpp"
+#include "sinew/problems/quasistatic/builtin_scene_files.hpp"
+#include "sinew/problems/quasistatic/builtin_scenes.hpp"
 #include "sinew/runs/scene_runner.hpp"
 
 #include <nlohmann/json.hpp>
@@ -174,4 +176,26 @@ TEST_CASE("dynamic scenes: invalid dynamics are input errors naming the JSON pat
   "materials": [{"model": "fixed-corotated", "parameters": {"mu": 1e4, "lambda": 1e4}}], )" +
                                  dynamics_json("bdf2", 0.01, 0.1) + "}";
     CHECK_THROWS_WITH(parse_scene(massless, "cube"), Catch::Contains("needs a density > 0"));
+}
+
+TEST_CASE("dynamic scenes: every built-in scene of suite dynamics reads and takes its first steps", "[time]")
+{
+    int count = 0;
+    for (const BuiltinSceneFile& file : builtin_scene_files()) {
+        if (!file.dynamic)
+            continue;
+        CAPTURE(file.name);
+        Scene scene = make_builtin_scene(file.name);
+        REQUIRE(scene.dynamics);
+        scene.dynamics->duration = 2.0 * scene.dynamics->time_step;
+        SceneRunSettings settings;
+        settings.solver = scene_solver_settings(scene).name;
+        const SceneRunOutcome outcome = run_scene(scene, settings);
+        CHECK(outcome.converged);
+        // The whole run as one result: both steps' iterations and one history row each.
+        CHECK(outcome.last.history.size() == 2);
+        CHECK(outcome.last.iterations == outcome.total_iterations);
+        ++count;
+    }
+    CHECK(count == 5);
 }

@@ -1,22 +1,16 @@
 #include "sinew/problems/quasistatic/parts/constraint_part.hpp"
+#include "sinew/problems/quasistatic/parts/part_registry.hpp"
 #include "sinew/problems/quasistatic/parts/scene_reading.hpp"
 
 #include <algorithm>
-#include <mutex>
 
 namespace sinew {
 namespace {
 
-std::vector<std::shared_ptr<const ConstraintPart>>& registry()
+PartRegistry<ConstraintPart>& registry()
 {
-    static std::vector<std::shared_ptr<const ConstraintPart>> parts;
+    static PartRegistry<ConstraintPart> parts;
     return parts;
-}
-
-std::mutex& registry_mutex()
-{
-    static std::mutex mutex;
-    return mutex;
 }
 
 /// "constraints": constraint sets beside the potentials, each of a
@@ -73,19 +67,12 @@ const SceneRegistration<ConstraintsPart> constraints_part;
 
 void register_constraint_part(std::shared_ptr<const ConstraintPart> part)
 {
-    const std::lock_guard<std::mutex> lock(registry_mutex());
-    for (const auto& p : registry())
-        if (p->type() == part->type())
-            throw InputError("constraint type '" + part->type() + "' is registered twice");
-    registry().push_back(std::move(part));
+    registry().add(std::move(part), [](const ConstraintPart& p) { return p.type(); }, "constraint type");
 }
 
 std::vector<std::shared_ptr<const ConstraintPart>> constraint_parts()
 {
-    const std::lock_guard<std::mutex> lock(registry_mutex());
-    std::vector<std::shared_ptr<const ConstraintPart>> parts = registry();
-    std::stable_sort(parts.begin(), parts.end(), [](const auto& a, const auto& b) { return a->order() < b->order(); });
-    return parts;
+    return registry().sorted([](const ConstraintPart& p) { return p.order(); });
 }
 
 } // namespace sinew

@@ -1,24 +1,18 @@
 #include "sinew/problems/quasistatic/parts/scene_part.hpp"
 
 #include "sinew/core/input_error.hpp"
+#include "sinew/problems/quasistatic/parts/part_registry.hpp"
 
 #include <algorithm>
 #include <limits>
-#include <mutex>
 
 namespace sinew {
 namespace {
 
-std::vector<std::shared_ptr<const ScenePart>>& registry()
+PartRegistry<ScenePart>& registry()
 {
-    static std::vector<std::shared_ptr<const ScenePart>> parts;
+    static PartRegistry<ScenePart> parts;
     return parts;
-}
-
-std::mutex& registry_mutex()
-{
-    static std::mutex mutex;
-    return mutex;
 }
 
 /// The direct children of `path` among the declared paths: "damping" has
@@ -41,19 +35,12 @@ std::vector<std::string> children(const std::vector<SceneKey>& keys, const std::
 
 void register_scene_part(std::shared_ptr<const ScenePart> part)
 {
-    const std::lock_guard<std::mutex> lock(registry_mutex());
-    for (const auto& p : registry())
-        if (p->key() == part->key())
-            throw InputError("scene part '" + part->key() + "' is registered twice");
-    registry().push_back(std::move(part));
+    registry().add(std::move(part), [](const ScenePart& p) { return p.key(); }, "scene part");
 }
 
 std::vector<std::shared_ptr<const ScenePart>> scene_parts()
 {
-    const std::lock_guard<std::mutex> lock(registry_mutex());
-    std::vector<std::shared_ptr<const ScenePart>> parts = registry();
-    std::stable_sort(parts.begin(), parts.end(), [](const auto& a, const auto& b) { return a->stage() < b->stage(); });
-    return parts;
+    return registry().sorted([](const ScenePart& p) { return p.stage(); });
 }
 
 std::string scene_keys_markdown()
