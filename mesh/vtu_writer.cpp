@@ -1,6 +1,12 @@
 #include "sinew/mesh/vtu_writer.hpp"
 
 #include "sinew/core/input_error.hpp"
+#include "sinew/mesh/base64.hpp"
+
+#include <cstdint>
+#include <cstring>
+#include <type_traits>
+#include <vector>
 
 #include <fstream>
 #include <limits>
@@ -44,37 +50,75 @@ std::string xml_escaped(const std::string& text)
     return escaped;
 }
 
-/// Writes columns of `values` one per line, padding 2-component columns with
-/// a zero third component.
-void write_columns(std::ofstream& out, const Eigen::MatrixXd& values)
-{
-    const bool pad = values.rows() == 2;
-    for (Eigen::Index j = 0; j < values.cols(); ++j) {
-        for (Eigen::Index i = 0; i < values.rows(); ++i)
-            out << (i > 0 ? " " : "") << values(i, j);
-        out << (pad ? " 0\n" : "\n");
-    }
-}
+/// Emits DataArray elements in one encoding.
+class DataArrayWriter {
+public:
+    DataArrayWriter(std::ofstream& out, VtuEncoding encoding) : out_(out), encoding_(encoding) {}
 
-void write_data_arrays(std::ofstream& out, const VtuArrays& arrays, const std::string& section)
+    /// A Float64 array of the columns of `values`, 2-component columns padded
+    /// with a zero third component. `name` empty: no Name attribute.
+    void float64(const std::string& name, const Eigen::MatrixXd& values)
+    {
+        const Eigen::Index components = values.rows() == 2 ? 3 : values.rows();
+        std::vector<double> data;
+        data.reserve(static_cast<size_t>(components * values.cols()));
+        for (Eigen::Index j = 0; j < values.cols(); ++j)
+            for (Eigen::Index i = 0; i < components; ++i)
+                data.push_back(i < values.rows() ? values(i, j) : 0.0);
+        write("Float64", name, components, data, values.cols() > 0 ? static_cast<size_t>(components) : 1);
+    }
+
+    /// An integer array of `type` Int64 or UInt8, `per_line` values a line in ASCII.
+    template <typename Integer>
+    void integers(const char* type, const std::string& name, const std::vector<Integer>& data, size_t per_line)
+    {
+        write(type, name, 1, data, per_line);
+    }
+
+private:
+    template <typename Value>
+    void write(const char* type, const std::string& name, Eigen::Index components, const std::vector<Value>& data,
+               size_t per_line)
+    {
+        out_ << "        <DataArray type=\"" << type << "\"";
+        if (!name.empty())
+            out_ << " Name=\"" << xml_escaped(name) << "\"";
+        if (components > 1 || std::is_same<Value, double>::value)
+            out_ << " NumberOfComponents=\"" << components << "\"";
+        out_ << " format=\"" << (encoding_ == VtuEncoding::ascii ? "ascii" : "binary") << "\">\n";
+        if (encoding_ == VtuEncoding::ascii) {
+            for (size_t k = 0; k < data.size(); ++k)
+                out_ << (k % per_line == 0 ? "" : " ") << +data[k] << (k % per_line == per_line - 1 ? "\n" : "");
+        } else {
+            // base64 of (UInt32 byte count, the values), little-endian as the header says.
+            const std::uint32_t bytes = static_cast<std::uint32_t>(data.size() * sizeof(Value));
+            std::vector<unsigned char> block(sizeof bytes + bytes);
+            std::memcpy(block.data(), &bytes, sizeof bytes);
+            if (bytes > 0)
+                std::memcpy(block.data() + sizeof bytes, data.data(), bytes);
+            out_ << base64(block.data(), block.size()) << "\n";
+        }
+        out_ << "        </DataArray>\n";
+    }
+
+    std::ofstream& out_;
+    VtuEncoding encoding_;
+};
+
+void write_data_arrays(DataArrayWriter& writer, std::ofstream& out, const VtuArrays& arrays, const std::string& section)
 {
     if (arrays.empty())
         return;
     out << "      <" << section << ">\n";
-    for (const auto& [name, values] : arrays) {
-        const Eigen::Index components = values.rows() == 2 ? 3 : values.rows();
-        out << "        <DataArray type=\"Float64\" Name=\"" << xml_escaped(name) << "\" NumberOfComponents=\""
-            << components << "\" format=\"ascii\">\n";
-        write_columns(out, values);
-        out << "        </DataArray>\n";
-    }
+    for (const auto& [name, values] : arrays)
+        writer.float64(name, values);
     out << "      </" << section << ">\n";
 }
 
 } // namespace
 
 void write_vtu(const std::string& path, const Mesh& mesh, const Eigen::MatrixXd& positions,
-               const VtuArrays& point_data, const VtuArrays& cell_data)
+               const VtuArrays& point_data, const VtuArrays& cell_data, VtuEncoding encoding)
 {
     const int dimension = space_dimension(mesh.kind);
     if (positions.rows() != dimension || positions.cols() != mesh.num_nodes())
@@ -96,34 +140,29 @@ void write_vtu(const std::string& path, const Mesh& mesh, const Eigen::MatrixXd&
         << "  <UnstructuredGrid>\n"
         << "    <Piece NumberOfPoints=\"" << mesh.num_nodes() << "\" NumberOfCells=\"" << mesh.num_elements()
         << "\">\n";
-    write_data_arrays(out, point_data, "PointData");
-    write_data_arrays(out, cell_data, "CellData");
+    DataArrayWriter writer(out, encoding);
+    write_data_arrays(writer, out, point_data, "PointData");
+    write_data_arrays(writer, out, cell_data, "CellData");
 
-    out << "      <Points>\n"
-        << "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    write_columns(out, positions);
-    out << "        </DataArray>\n"
-        << "      </Points>\n";
+    out << "      <Points>\n";
+    Eigen::MatrixXd points = Eigen::MatrixXd::Zero(3, positions.cols());
+    points.topRows(dimension) = positions;
+    writer.float64("", points);
+    out << "      </Points>\n";
 
     const int corners = nodes_per_element(mesh.kind);
-    const int cell_type = mesh.kind == ElementKind::tetrahedron ? kVtkTetra : kVtkTriangle;
-    out << "      <Cells>\n"
-        << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+    const std::uint8_t cell_type = mesh.kind == ElementKind::tetrahedron ? kVtkTetra : kVtkTriangle;
+    std::vector<std::int64_t> connectivity, offsets;
     for (int e = 0; e < mesh.num_elements(); ++e) {
         for (int k = 0; k < corners; ++k)
-            out << (k > 0 ? " " : "") << mesh.elements(k, e);
-        out << "\n";
+            connectivity.push_back(mesh.elements(k, e));
+        offsets.push_back(static_cast<std::int64_t>(e + 1) * corners);
     }
-    out << "        </DataArray>\n"
-        << "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-    for (int e = 0; e < mesh.num_elements(); ++e)
-        out << static_cast<long long>(e + 1) * corners << "\n";
-    out << "        </DataArray>\n"
-        << "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-    for (int e = 0; e < mesh.num_elements(); ++e)
-        out << cell_type << "\n";
-    out << "        </DataArray>\n"
-        << "      </Cells>\n"
+    out << "      <Cells>\n";
+    writer.integers("Int64", "connectivity", connectivity, static_cast<size_t>(corners));
+    writer.integers("Int64", "offsets", offsets, 1);
+    writer.integers("UInt8", "types", std::vector<std::uint8_t>(static_cast<size_t>(mesh.num_elements()), cell_type), 1);
+    out << "      </Cells>\n"
         << "    </Piece>\n"
         << "  </UnstructuredGrid>\n"
         << "</VTKFile>\n";

@@ -67,7 +67,9 @@ public:
         every.upper = std::numeric_limits<int>::max();
         return {{"folder", "string", "", "<name>-output", "relative to the scene file"},
                 {"vtu", "string", "none | final | every_step", "final", "which VTU files are written"},
-                every};
+                every,
+                {"format", "string", "binary | ascii", "binary",
+                 "VTU data arrays as base64 binary (full precision, smaller) or ASCII numbers"}};
     }
     void read(const JsonCursor& o, SceneAssembly& assembly) const override
     {
@@ -88,6 +90,15 @@ public:
                 output.vtu = VtuOutput::every_step;
             else
                 v->fail("unknown value '" + vtu + "'; valid: none, final, every_step");
+        }
+        if (auto v = o.find("format")) {
+            const std::string format = v->string();
+            if (format == "binary")
+                output.encoding = VtuEncoding::binary;
+            else if (format == "ascii")
+                output.encoding = VtuEncoding::ascii;
+            else
+                v->fail("unknown value '" + format + "'; valid: binary, ascii");
         }
         assembly.scene.run_settings[key()] = output;
     }

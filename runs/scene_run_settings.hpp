@@ -2,6 +2,7 @@
 // The run settings a scene file carries: its "solver" and "output" parts,
 // read by parts registered here (runs/, not problems/: how a scene is run is
 // this layer's business) and kept in Scene::run_settings.
+#include "sinew/mesh/vtu_writer.hpp"
 #include "sinew/problems/quasistatic/scene.hpp"
 
 #include <map>
@@ -33,6 +34,7 @@ struct SceneOutput {
     std::string folder;  ///< resolved against the scene file's folder; empty: the CLI decides
     VtuOutput vtu = VtuOutput::final;
     int every = 1;  ///< time stepping with every_step: a VTU every this many steps
+    VtuEncoding encoding = VtuEncoding::binary;  ///< "format": "binary" (default) or "ascii"
 };
 
 /// The scene's "solver" settings; defaults when it has none.

@@ -71,6 +71,7 @@ ResolvedSceneRun resolve_scene_run(const Scene& scene, const SceneRunRequest& re
                         std::to_string(scene.load_steps));
     settings.folder = !request.folder.empty() ? request.folder : scene_output_settings(scene).folder;
     settings.vtu = scene_output_settings(scene).vtu;
+    settings.encoding = scene_output_settings(scene).encoding;
     return resolved;
 }
 
@@ -115,12 +116,13 @@ SceneRunOutcome run_scene(Scene& scene, const SceneRunSettings& settings)
         const Eigen::VectorXd configuration = problem.full_configuration(result.x);
         if (writes && settings.vtu == VtuOutput::every_step && n > 1) {
             const std::string name = "step_" + std::to_string(k) + ".vtu";
-            write_scene_vtu(folder + name, scene, configuration, result.constraint_multipliers);
+            write_scene_vtu(folder + name, scene, configuration, result.constraint_multipliers, settings.encoding);
             vtu_files.push_back(name);
         }
         if (result.status != Status::converged || k == n) {
             if (writes && settings.vtu != VtuOutput::none) {
-                write_scene_vtu(folder + "result.vtu", scene, configuration, result.constraint_multipliers);
+                write_scene_vtu(folder + "result.vtu", scene, configuration, result.constraint_multipliers,
+                                settings.encoding);
                 vtu_files.push_back("result.vtu");
             }
             break;

@@ -18,6 +18,7 @@ struct SceneRunSettings {
     int load_steps = 1;
     std::string folder;  ///< created when missing; empty: nothing is written
     VtuOutput vtu = VtuOutput::final;
+    VtuEncoding encoding = VtuEncoding::binary;
 };
 
 /// What the caller (the command line, a bench, a test) asks for beyond the

@@ -12,7 +12,7 @@ Eigen::MatrixXd by_node(const Eigen::VectorXd& v, int dimension)
 } // namespace
 
 void write_scene_vtu(const std::string& path, Scene& scene, const Eigen::VectorXd& configuration,
-                     const Eigen::VectorXd& multipliers, const VtuArrays& extra_point_data)
+                     const Eigen::VectorXd& multipliers, VtuEncoding encoding, const VtuArrays& extra_point_data)
 {
     const Mesh& mesh = scene.mesh;
     const int dimension = static_cast<int>(mesh.nodes.rows());
@@ -44,7 +44,7 @@ void write_scene_vtu(const std::string& path, Scene& scene, const Eigen::VectorX
                                             : Eigen::VectorXd();
         set->add_output_data(configuration, rows, arrays);
     }
-    write_vtu(path, mesh, positions, arrays.points, arrays.cells);
+    write_vtu(path, mesh, positions, arrays.points, arrays.cells, encoding);
 }
 
 } // namespace sinew

@@ -15,6 +15,7 @@ namespace sinew {
 /// (the sets with their rows of `multipliers`). `extra_point_data` adds
 /// arrays (a time step's velocity).
 void write_scene_vtu(const std::string& path, Scene& scene, const Eigen::VectorXd& configuration,
-                     const Eigen::VectorXd& multipliers, const VtuArrays& extra_point_data = {});
+                     const Eigen::VectorXd& multipliers, VtuEncoding encoding = VtuEncoding::binary,
+                     const VtuArrays& extra_point_data = {});
 
 } // namespace sinew

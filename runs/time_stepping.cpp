@@ -239,7 +239,7 @@ private:
         const int dimension = static_cast<int>(scene_.mesh.nodes.rows());
         VtuArrays velocity;
         velocity["velocity"] = Eigen::Map<const Eigen::MatrixXd>(state.v.data(), dimension, state.v.size() / dimension);
-        write_scene_vtu(folder_ + name, scene_, state.x, multipliers, velocity);
+        write_scene_vtu(folder_ + name, scene_, state.x, multipliers, settings_.encoding, velocity);
     }
 
     Scene& scene_;

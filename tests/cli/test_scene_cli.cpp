@@ -3,6 +3,8 @@
 #include "run_sinew.hpp"
 
 #include <catch2/catch.hpp>
+#include <cstdint>
+#include <cstring>
 #include <sstream>
 #include <vector>
 
@@ -216,14 +218,47 @@ TEST_CASE("the VTU output of a scene with inextensible fibers holds each element
 
 namespace {
 
-/// The numbers of the DataArray called `name` in a VTU file sinew wrote.
+/// The bytes of base64 text (RFC 4648), decoded here independently of the writer.
+std::vector<unsigned char> unbase64(const std::string& text)
+{
+    const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::vector<unsigned char> bytes;
+    unsigned bits = 0;
+    int count = 0;
+    for (char c : text) {
+        const size_t digit = alphabet.find(c);
+        if (digit == std::string::npos)
+            continue;  // padding and white space
+        bits = (bits << 6) | static_cast<unsigned>(digit);
+        count += 6;
+        if (count >= 8) {
+            count -= 8;
+            bytes.push_back(static_cast<unsigned char>((bits >> count) & 0xFFu));
+        }
+    }
+    return bytes;
+}
+
+/// The values of the Float64 DataArray `name`: ASCII numbers, or binary
+/// (base64 of a UInt32 byte count and the little-endian doubles).
 std::vector<double> vtu_array(const std::string& vtu, const std::string& name)
 {
     const size_t head = vtu.find("Name=\"" + name + "\"");
     REQUIRE(head != std::string::npos);
     const size_t begin = vtu.find('>', head) + 1;
-    std::istringstream numbers(vtu.substr(begin, vtu.find("</DataArray>", begin) - begin));
+    const std::string body = vtu.substr(begin, vtu.find("</DataArray>", begin) - begin);
     std::vector<double> values;
+    if (vtu.substr(head, begin - head).find("format=\"binary\"") != std::string::npos) {
+        const std::vector<unsigned char> bytes = unbase64(body);
+        REQUIRE(bytes.size() >= 4);
+        std::uint32_t size = 0;
+        std::memcpy(&size, bytes.data(), 4);
+        REQUIRE(bytes.size() == 4 + size);
+        values.resize(size / sizeof(double));
+        std::memcpy(values.data(), bytes.data() + 4, size);
+        return values;
+    }
+    std::istringstream numbers(body);
     for (double v; numbers >> v;)
         values.push_back(v);
     return values;

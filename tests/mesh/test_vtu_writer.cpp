@@ -7,6 +7,8 @@
 #include <catch2/catch.hpp>
 
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -187,4 +189,46 @@ TEST_CASE("VTU writer: wrong shapes are the caller's bug, an unwritable path is 
                     std::invalid_argument);
     const std::string unwritable = dir.path("no/such/folder/box.vtu");
     require_input_error([&] { write_vtu(unwritable, mesh, mesh.nodes); }, {unwritable, "cannot write file"});
+}
+
+TEST_CASE("VTU writer: the binary encoding holds exactly the values of the ASCII one", "[mesh][vtu]")
+{
+    ScratchDirectory dir;
+    const Mesh mesh = box_tets(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 2, 3), 2, 1, 2);
+    const Eigen::MatrixXd displacement = Eigen::MatrixXd::Random(3, mesh.num_nodes());
+    const Eigen::MatrixXd velocity = Eigen::MatrixXd::Random(2, mesh.num_nodes());  // padded to 3
+    const Eigen::MatrixXd stress = Eigen::MatrixXd::Random(1, mesh.num_elements());
+    const std::string ascii = dir.path("ascii.vtu"), binary = dir.path("binary.vtu");
+    write_vtu(ascii, mesh, mesh.nodes + displacement, {{"displacement", displacement}, {"velocity", velocity}},
+              {{"stress", stress}}, VtuEncoding::ascii);
+    write_vtu(binary, mesh, mesh.nodes + displacement, {{"displacement", displacement}, {"velocity", velocity}},
+              {{"stress", stress}}, VtuEncoding::binary);
+    // Python's XML, base64 and struct decode the binary file independently:
+    // every array (Float64, Int64, UInt8) must equal the ASCII file's.
+    const std::string script = R"(
+import base64, struct, sys, xml.dom.minidom as m
+sizes = {'Float64': ('d', 8), 'Int64': ('q', 8), 'UInt8': ('B', 1)}
+def arrays(path):
+    out = {}
+    for a in m.parse(path).getElementsByTagName('DataArray'):
+        text = a.firstChild.data.strip() if a.firstChild else ''
+        if a.getAttribute('format') == 'binary':
+            raw = base64.b64decode(text)
+            n = struct.unpack('<I', raw[:4])[0]
+            code, size = sizes[a.getAttribute('type')]
+            assert len(raw) == 4 + n, (len(raw), n)
+            values = list(struct.unpack('<%d%s' % (n // size, code), raw[4:]))
+        else:
+            values = [float(v) for v in text.split()]
+        out[a.getAttribute('Name') + '/' + a.parentNode.tagName] = values
+    return out
+a, b = arrays(sys.argv[1]), arrays(sys.argv[2])
+sys.exit(0 if a == b and len(a) == 7 else 1)
+)";
+    const std::string script_path = dir.path("compare.py");
+    std::ofstream(script_path) << script;
+    const std::string command = "/usr/bin/python3 '" + script_path + "' '" + ascii + "' '" + binary + "'";
+    CHECK(std::system(command.c_str()) == 0);
+    // The binary file is the smaller one.
+    CHECK(std::filesystem::file_size(binary) < std::filesystem::file_size(ascii));
 }
