@@ -284,6 +284,67 @@ void finish_run(Result& run, const Result& last, const TimeSteppingOutcome& outc
     run.message = outcome.converged ? "every time step converged" : stopped;
 }
 
+/// x₀ (rest, prescribed motions at the load factor s(0)), v₀ and a₀.
+TimeState initial_state(Scene& scene, const DynamicsSettings& d)
+{
+    const int dimension = static_cast<int>(scene.mesh.nodes.rows());
+    scene.apply_load_factor(d.load_factor.at(0.0));
+    TimeState initial;
+    initial.x = scene.problem->prescribed_configuration();
+    initial.v = initial_velocity(d, initial.x, dimension);
+    initial.a = initial_acceleration(scene, initial.x, dimension);
+    return initial;
+}
+
+/// The solver options of each step: the run's, with one SolverMemory for the
+/// whole run (projected Newton keeps its symbolic analysis across steps), the
+/// KKT tolerance relative to the step's force scale (not to max(1, ‖∇f‖∞) at
+/// the solution, where ∇f vanishes) and, for a solver that declares
+/// gradient_target and was not given one, that target.
+class StepOptions {
+public:
+    explicit StepOptions(const SceneRunSettings& settings)
+        : base_(settings.options), options_(settings.options),
+          set_target_(declares_gradient_target(settings.solver) && settings.options.backend.count("gradient_target") == 0)
+    {
+        options_.memory = std::make_shared<SolverMemory>();
+    }
+
+    const SolverOptions& for_step(Scene& scene, const TimeIntegrator& integrator, const Eigen::VectorXd& x0)
+    {
+        const double force_scale = step_force_scale(scene, integrator);
+        options_.kkt_tolerance = base_.kkt_tolerance * std::max(1.0, force_scale);
+        if (set_target_ && hessian_diagonal_ == 0.0)
+            hessian_diagonal_ = largest_hessian_diagonal(scene, x0);
+        if (set_target_)
+            options_.backend["gradient_target"] =
+                exact_text(step_gradient_target(integrator, base_.tolerance, force_scale, hessian_diagonal_));
+        return options_;
+    }
+
+private:
+    const SolverOptions& base_;
+    SolverOptions options_;
+    const bool set_target_;
+    double hessian_diagonal_ = 0.0;  ///< at the run's start, for the round-off floor
+};
+
+/// The row of step k from its solve (energies and momenta come from measure()).
+TimeStepRow solved_row(long long k, double time, const Result& result)
+{
+    TimeStepRow row;
+    row.step = static_cast<int>(k);
+    row.time = time;
+    row.status = result.status;
+    row.iterations = result.iterations;
+    const auto factorizations = result.statistics.find("factorizations");
+    if (factorizations != result.statistics.end())
+        row.factorizations = static_cast<int>(factorizations->second);
+    row.max_constraint_violation = result.constraint_violation;
+    row.time_s = result.time_s;
+    return row;
+}
+
 } // namespace
 
 TimeSteppingOutcome run_time_stepping(Scene& scene, const SceneRunSettings& settings,
@@ -301,12 +362,7 @@ TimeSteppingOutcome run_time_stepping(Scene& scene, const SceneRunSettings& sett
 
     QuasistaticProblem& problem = *scene.problem;
     const int dimension = static_cast<int>(scene.mesh.nodes.rows());
-    const double h = d.time_step;
-    scene.apply_load_factor(d.load_factor.at(0.0));
-    TimeState initial;
-    initial.x = problem.prescribed_configuration();
-    initial.v = initial_velocity(d, initial.x, dimension);
-    initial.a = initial_acceleration(scene, initial.x, dimension);
+    const TimeState initial = initial_state(scene, d);
     integrator->start(initial);
 
     TimeSteppingOutcome outcome;
@@ -319,45 +375,22 @@ TimeSteppingOutcome run_time_stepping(Scene& scene, const SceneRunSettings& sett
         observer.on_step(row, initial);
 
     const long long n = d.num_steps();
-    const bool set_target = declares_gradient_target(settings.solver) &&
-                            settings.options.backend.count("gradient_target") == 0;
-    SolverOptions step_options = settings.options;
-    // A solver that keeps state across solves (projected Newton: its
-    // factorization's symbolic analysis) keeps it from step to step.
-    step_options.memory = std::make_shared<SolverMemory>();
-    double hessian_diagonal = 0.0;
+    StepOptions step_options(settings);
     std::string stopped;
-    for (long long k = 1; k <= n; ++k) {
-        const double t0 = static_cast<double>(k - 1) * h, t1 = static_cast<double>(k) * h;
+    for (long long k = 1; k <= n && stopped.empty(); ++k) {
+        const double t0 = static_cast<double>(k - 1) * d.time_step, t1 = static_cast<double>(k) * d.time_step;
         scene.apply_load_factors(d.load_factor.at(t0), d.load_factor.at(t1), integrator->force_time_weight());
         set_step_terms(scene, *integrator, d);
-        // The KKT residual a step may leave is relative to its force scale,
-        // not to max(1, ‖∇f‖∞) at the solution, where ∇f vanishes.
-        const double force_scale = step_force_scale(scene, *integrator);
-        step_options.kkt_tolerance = settings.options.kkt_tolerance * std::max(1.0, force_scale);
-        if (set_target && k == 1)
-            hessian_diagonal = largest_hessian_diagonal(scene, initial.x);
-        if (set_target)
-            step_options.backend["gradient_target"] = exact_text(
-                step_gradient_target(*integrator, settings.options.tolerance, force_scale, hessian_diagonal));
+        const SolverOptions& options = step_options.for_step(scene, *integrator, initial.x);
         problem.set_starting_configuration(integrator->explicit_guess());
-        outcome.last = solve(problem, settings.solver, step_options);
+        outcome.last = solve(problem, settings.solver, options);
         const Result& result = outcome.last;
         integrator->advance(problem.full_configuration(result.x));
         outcome.state = integrator->state();
         outcome.total_iterations += result.iterations;
         outcome.total_time_s += result.time_s;
 
-        row = TimeStepRow{};
-        row.step = static_cast<int>(k);
-        row.time = t1;
-        row.status = result.status;
-        row.iterations = result.iterations;
-        const auto factorizations = result.statistics.find("factorizations");
-        if (factorizations != result.statistics.end())
-            row.factorizations = static_cast<int>(factorizations->second);
-        row.max_constraint_violation = result.constraint_violation;
-        row.time_s = result.time_s;
+        row = solved_row(k, t1, result);
         scene.apply_load_factor(d.load_factor.at(t1));  // energies at tₙ₊₁'s load factor
         measure(scene, outcome.state, initial.x, dimension, row);
         outcome.steps.push_back(row);
@@ -365,14 +398,11 @@ TimeSteppingOutcome run_time_stepping(Scene& scene, const SceneRunSettings& sett
         output.step(static_cast<int>(k), t1, outcome.state, result.constraint_multipliers);
         if (observer.on_step)
             observer.on_step(row, outcome.state);
-        if (result.status != Status::converged) {
+        if (result.status != Status::converged)
             stopped = "step " + std::to_string(k) + " did not converge (" + to_string(result.status) + ")";
-            break;
-        }
-        if (k < n && observer.stop_requested && observer.stop_requested()) {
+        else if (k < n && observer.stop_requested && observer.stop_requested()) {
             outcome.interrupted = true;
             stopped = "interrupted after step " + std::to_string(k) + " of " + std::to_string(n);
-            break;
         }
     }
     outcome.converged = stopped.empty();

@@ -307,3 +307,37 @@ TEST_CASE("sinew list --scene-keys prints every declared key, and docs/scenes.md
     const std::string docs = slurp(std::string(SINEW_SOURCE_DIR) + "/docs/scenes.md");
     CHECK(docs.find(run.out) != std::string::npos);  // regenerate: sinew list --scene-keys
 }
+
+TEST_CASE("sinew solve on a scene with dynamics writes a row per step, step VTUs and a collection, and exits 0 or 3")
+{
+    const std::string dynamics = R"(,
+  "dynamics": {"integrator": "bdf2", "time_step": 0.01, "duration": 0.05},
+  "output": {"vtu": "every_step", "every": 2})";
+    const std::string scene = write_beam_scene("beam_dynamics.json", dynamics);
+    const std::string folder = scratch("beam_dynamics_out");
+    std::filesystem::remove_all(folder);
+    const Run run = run_sinew("solve '" + scene + "' --output '" + folder + "'");
+    CAPTURE(run.err);
+    REQUIRE(run.exit_code == 0);
+    CHECK(run.err.find("sinew: step 5 of 5  t = 0.05 s  converged") != std::string::npos);
+    const auto result = read_json(folder + "/result.json");
+    CHECK(result["integrator"] == "bdf2");
+    CHECK(result["steps"].size() == 6);
+    CHECK(result["stopped"] == "");
+    const std::string pvd = slurp(folder + "/result.pvd");
+    for (const char* file : {"step_0.vtu", "step_2.vtu", "step_4.vtu"})
+        CHECK(pvd.find(file) != std::string::npos);
+
+    // One Newton iteration per step cannot converge: the first step's row is written, exit 3.
+    const std::string failing = write_beam_scene(
+        "beam_dynamics_fails.json",
+        R"(, "dynamics": {"time_step": 0.01, "duration": 0.05}, "solver": {"max_iterations": 1, "tolerance": 1e-14})");
+    const std::string failed_folder = scratch("beam_dynamics_fails_out");
+    std::filesystem::remove_all(failed_folder);
+    const Run stopped = run_sinew("solve '" + failing + "' --output '" + failed_folder + "' --verbosity 0");
+    CHECK(stopped.exit_code == 3);
+    const auto partial = read_json(failed_folder + "/result.json");
+    CHECK(partial["steps"].size() == 2);
+    CHECK(partial["converged"] == false);
+    CHECK(partial["stopped"].get<std::string>().find("step 1 did not converge") != std::string::npos);
+}
