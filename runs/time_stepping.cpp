@@ -69,14 +69,13 @@ Eigen::VectorXd initial_acceleration(Scene& scene, const Eigen::VectorXd& x, int
     return a;
 }
 
-/// The measures of a row at state `state` (energies, momenta), the work
-/// against x₀ at the load factor in force.
-void measure(Scene& scene, const TimeState& state, const Eigen::VectorXd& x0, int dimension, TimeStepRow& row)
+/// The measures of a row at state `state` (energies, momenta), with W the
+/// external work done since t = 0.
+void measure(Scene& scene, const TimeState& state, double work, int dimension, TimeStepRow& row)
 {
-    const double external_at_start = external_potential(scene, x0);
     row.kinetic_energy = kinetic_energy(scene.node_masses, state.v, dimension);
     row.elastic_energy = scene.elastic->value(state.x);
-    row.external_work = external_at_start - external_potential(scene, state.x);
+    row.external_work = work;
     row.total_energy = row.kinetic_energy + row.elastic_energy - row.external_work;
     row.linear_momentum = linear_momentum(scene.node_masses, state.v, dimension);
     row.angular_momentum = angular_momentum(scene.node_masses, state.x, state.v, dimension);
@@ -284,11 +283,11 @@ void finish_run(Result& run, const Result& last, const TimeSteppingOutcome& outc
     run.message = outcome.converged ? "every time step converged" : stopped;
 }
 
-/// x₀ (rest, prescribed motions at the load factor s(0)), v₀ and a₀.
+/// x₀ (rest, prescribed motions and loads at t = 0), v₀ and a₀.
 TimeState initial_state(Scene& scene, const DynamicsSettings& d)
 {
     const int dimension = static_cast<int>(scene.mesh.nodes.rows());
-    scene.apply_load_factor(d.load_factor.at(0.0));
+    scene.apply_time(0.0);
     TimeState initial;
     initial.x = scene.problem->prescribed_configuration();
     initial.v = initial_velocity(d, initial.x, dimension);
@@ -368,7 +367,8 @@ TimeSteppingOutcome run_time_stepping(Scene& scene, const SceneRunSettings& sett
     TimeSteppingOutcome outcome;
     outcome.state = initial;
     TimeStepRow row;
-    measure(scene, initial, initial.x, dimension, row);
+    double work = 0.0;  // W
+    measure(scene, initial, work, dimension, row);
     outcome.steps.push_back(row);
     output.step(0, 0.0, initial, Eigen::VectorXd());
     if (observer.on_step)
@@ -379,20 +379,23 @@ TimeSteppingOutcome run_time_stepping(Scene& scene, const SceneRunSettings& sett
     std::string stopped;
     for (long long k = 1; k <= n && stopped.empty(); ++k) {
         const double t0 = static_cast<double>(k - 1) * d.time_step, t1 = static_cast<double>(k) * d.time_step;
-        scene.apply_load_factors(d.load_factor.at(t0), d.load_factor.at(t1), integrator->force_time_weight());
+        scene.apply_time(t0, t1, integrator->force_time_weight());
         set_step_terms(scene, *integrator, d);
         const SolverOptions& options = step_options.for_step(scene, *integrator, initial.x);
         problem.set_starting_configuration(integrator->explicit_guess());
         outcome.last = solve(problem, settings.solver, options);
         const Result& result = outcome.last;
+        const Eigen::VectorXd x_n = outcome.state.x;
         integrator->advance(problem.full_configuration(result.x));
         outcome.state = integrator->state();
+        // W += E_ext(xₙ) − E_ext(xₙ₊₁) under the step's forces: f·Δx for gravity and loads
+        work += external_potential(scene, x_n) - external_potential(scene, outcome.state.x);
         outcome.total_iterations += result.iterations;
         outcome.total_time_s += result.time_s;
 
         row = solved_row(k, t1, result);
-        scene.apply_load_factor(d.load_factor.at(t1));  // energies at tₙ₊₁'s load factor
-        measure(scene, outcome.state, initial.x, dimension, row);
+        scene.apply_time(t1);  // energies at tₙ₊₁'s loads
+        measure(scene, outcome.state, work, dimension, row);
         outcome.steps.push_back(row);
         add_step(outcome.run, result, row, outcome.total_time_s);
         output.step(static_cast<int>(k), t1, outcome.state, result.constraint_multipliers);

@@ -20,8 +20,9 @@ struct TimeStepRow {
     int factorizations = -1;  ///< −1: the solver does not report it
     double kinetic_energy = 0.0;
     double elastic_energy = 0.0;
-    /// W = E_ext(x₀) − E_ext(x): the work of gravity, loads and obstacle
-    /// penalties (as potentials, at the current load factor) since t = 0.
+    /// W = Σ_steps E_ext(xₖ) − E_ext(xₖ₊₁), each step's difference under the
+    /// forces of that step: the work of gravity, loads and obstacle
+    /// penalties since t = 0 (f·Δx for the linear ones, as loads vary in time).
     double external_work = 0.0;
     double total_energy = 0.0;  ///< kinetic + elastic − W
     Eigen::Vector3d linear_momentum = Eigen::Vector3d::Zero();

@@ -37,4 +37,20 @@ double KeyframeCurve::at(double t) const
     return (1.0 - w) * a.value + w * b.value;
 }
 
+double KeyframeCurve::lowest() const
+{
+    double least = keys_.empty() ? fallback_ : keys_.front().value;
+    for (const Keyframe& k : keys_)
+        least = std::min(least, k.value);
+    return least;
+}
+
+double KeyframeCurve::highest() const
+{
+    double greatest = keys_.empty() ? fallback_ : keys_.front().value;
+    for (const Keyframe& k : keys_)
+        greatest = std::max(greatest, k.value);
+    return greatest;
+}
+
 } // namespace sinew

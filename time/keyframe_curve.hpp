@@ -20,6 +20,10 @@ public:
 
     double at(double t) const;
     const std::vector<Keyframe>& keyframes() const { return keys_; }
+    /// The least and the greatest value the curve takes (piecewise linear:
+    /// those of its keyframes, or the fallback).
+    double lowest() const;
+    double highest() const;
 
 private:
     std::vector<Keyframe> keys_;

@@ -9,7 +9,7 @@ namespace sinew {
 
 PointLoadPotential::PointLoadPotential(int dimension, int num_nodes, std::vector<int> nodes, Eigen::MatrixXd forces)
     : dimension_(dimension), num_nodes_(num_nodes), nodes_(std::move(nodes)), forces_(std::move(forces)),
-      no_stencils_(1, 0)
+      scales_(Eigen::VectorXd::Ones(static_cast<Eigen::Index>(nodes_.size()))), no_stencils_(1, 0)
 {
     if (dimension_ < 1 || num_nodes_ < 0)
         throw InputError("point loads: dimension " + std::to_string(dimension_) + " and node count " +
@@ -30,23 +30,32 @@ PointLoadPotential::PointLoadPotential(int dimension, int num_nodes, std::vector
 
 double PointLoadPotential::value(ConstVectorRef x)
 {
-    double sum = 0.0;
-    for (std::size_t k = 0; k < nodes_.size(); ++k)
-        sum -= scale_ * forces_.col(static_cast<Eigen::Index>(k)).dot(x.segment(nodes_[k] * dimension_, dimension_));
+    double sum = 0.0;  // −Σ_k s_k f_k·x_{n_k}
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+        const auto load = static_cast<Eigen::Index>(k);
+        sum -= scales_[load] * forces_.col(load).dot(x.segment(nodes_[k] * dimension_, dimension_));
+    }
     return std::isfinite(sum) ? sum : std::numeric_limits<double>::infinity();
 }
 
 void PointLoadPotential::add_gradient(ConstVectorRef, VectorRef gradient)
 {
-    for (std::size_t k = 0; k < nodes_.size(); ++k)
-        gradient.segment(nodes_[k] * dimension_, dimension_) -= scale_ * forces_.col(static_cast<Eigen::Index>(k));
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+        const auto load = static_cast<Eigen::Index>(k);
+        gradient.segment(nodes_[k] * dimension_, dimension_) -= scales_[load] * forces_.col(load);
+    }
 }
 
-void PointLoadPotential::set_scale(double scale)
+void PointLoadPotential::set_scale(double scale) { set_scale(scale, 0, static_cast<int>(nodes_.size())); }
+
+void PointLoadPotential::set_scale(double scale, int first, int count)
 {
     if (!std::isfinite(scale))
         throw InputError("point loads: scale is not finite");
-    scale_ = scale;
+    if (first < 0 || count < 0 || first + static_cast<long long>(count) > static_cast<long long>(nodes_.size()))
+        throw InputError("point loads: loads [" + std::to_string(first) + ", " + std::to_string(first + count) +
+                         ") are outside the " + std::to_string(nodes_.size()) + " loads");
+    scales_.segment(first, count).setConstant(scale);
 }
 
 } // namespace sinew

@@ -27,13 +27,17 @@ public:
     /// Multiplies every force by s (load stepping; 1 = as given). InputError
     /// when s is not finite.
     void set_scale(double s);
+    /// Multiplies the forces of loads [first, first + count) by s, the others
+    /// keeping theirs (loads that follow their own curve in time).
+    /// InputError when s is not finite or the range is outside the loads.
+    void set_scale(double s, int first, int count);
 
 private:
     int dimension_;
     int num_nodes_;
     std::vector<int> nodes_;
     Eigen::MatrixXd forces_;
-    double scale_ = 1.0;
+    Eigen::VectorXd scales_;  ///< one per load, 1 = as given
     Stencils no_stencils_;
 };
 

@@ -22,24 +22,22 @@ Eigen::VectorXd PrescribedMotion::translation_at(double s, int dimension) const
     return center - map_at(s, dimension) * center + s * translation;
 }
 
-void Scene::apply_load_factor(double s) { apply_load_factors(s, s, 1.0); }
-
-void Scene::apply_load_factors(double s0, double s1, double w)
+void Scene::apply_load_factor(double s)
 {
-    const int dimension = problem->potential().dimension();
-    for (size_t k = 0; k < motions.size(); ++k) {
-        const PrescribedMotion& m = motions[k];
-        problem->set_affine_map(static_cast<int>(k),
-                                (1.0 - w) * m.map_at(s0, dimension) + w * m.map_at(s1, dimension),
-                                (1.0 - w) * m.translation_at(s0, dimension) + w * m.translation_at(s1, dimension));
+    for (const ScaledQuantity& q : scaled)
+        q.set(*this, s, s, 1.0);
+}
+
+void Scene::apply_time(double t) { apply_time(t, t, 1.0); }
+
+void Scene::apply_time(double t0, double t1, double w)
+{
+    const KeyframeCurve constant(1.0);
+    const KeyframeCurve& load_curve = dynamics ? dynamics->load_factor : constant;
+    for (const ScaledQuantity& q : scaled) {
+        const KeyframeCurve& s = q.curve ? *q.curve : load_curve;
+        q.set(*this, s.at(t0), s.at(t1), w);
     }
-    const double s = (1.0 - w) * s0 + w * s1;  // the quantities linear in s
-    if (gravity)
-        gravity->set_scale(s);
-    if (loads)
-        loads->set_scale(s);
-    for (int e = 0; e < elastic->num_elements(); ++e)
-        elastic->set_activation(e, s * target_activations[e]);
 }
 
 Eigen::VectorXd Scene::fixed_flags() const

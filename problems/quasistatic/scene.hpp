@@ -3,14 +3,15 @@
 #include "sinew/energies/potentials/gravity_potential.hpp"
 #include "sinew/energies/potentials/inertia_potential.hpp"
 #include "sinew/energies/potentials/point_load_potential.hpp"
-#include "sinew/mesh/mesh.hpp"
 #include "sinew/energies/potentials/stiffness_damping_potential.hpp"
+#include "sinew/mesh/mesh.hpp"
 #include "sinew/problems/quasistatic/quasistatic_problem.hpp"
 #include "sinew/time/dynamics_settings.hpp"
 
 #include <Eigen/Core>
 
 #include <any>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -36,6 +37,23 @@ struct PrescribedMotion {
     Eigen::VectorXd translation_at(double s, int dimension) const;
 };
 
+struct Scene;
+
+/// Something a load factor scales: gravity, one entry of "loads", the motion
+/// of a Dirichlet set, the activation of a mesh group. In a scene stepped in
+/// time it follows its own curve s(t) when the scene gives it one
+/// (docs/dynamics.md, "Loads over time"), dynamics.load_curve otherwise.
+struct ScaledQuantity {
+    std::string name;  ///< for messages: "gravity", "loads[0]", "boundary 'left'", …
+    std::optional<KeyframeCurve> curve;
+    /// Sets the quantity in `scene` to (1 − w)·(its value at s₀) + w·(its
+    /// value at s₁).
+    std::function<void(Scene& scene, double s0, double s1, double w)> set;
+    /// Why the factors s ∈ [lowest, highest] are not admissible ("" when
+    /// they are): an activation leaving [0, 1], a map blend turning singular.
+    std::function<std::string(double lowest, double highest)> refusal;
+};
+
 /// A quasistatic scene built from its description (scene_reader.hpp): the
 /// mesh, the potentials, the NLP, and what a load factor s scales. Load
 /// stepping solves at s = k/N, k = 1…N, each step starting from the previous
@@ -53,7 +71,7 @@ struct Scene {
     /// threads), in the problem's constraint order after any Dirichlet set.
     std::vector<std::shared_ptr<ConstraintSet>> constraints;
     std::vector<PrescribedMotion> motions;         ///< one per Dirichlet set of `problem`
-    Eigen::VectorXd target_activations;            ///< α_e at s = 1, per element
+    std::vector<ScaledQuantity> scaled;            ///< what a load factor scales
     int load_steps = 1;                            ///< N
     /// What the run parts (runs/: "solver", "output") read, by their key;
     /// problems/ knows neither their types nor how a scene is run.
@@ -72,11 +90,14 @@ struct Scene {
 
     /// Sets every scaled quantity to its value at load factor s (above).
     void apply_load_factor(double s);
-    /// The same for forces that act between two load factors: every scaled
-    /// quantity is (1 − w)·(its value at s₀) + w·(its value at s₁), the
+    /// Sets every scaled quantity to its value at time t: s(t) of its own
+    /// curve, else of dynamics.load_curve (1 without dynamics).
+    void apply_time(double t);
+    /// The same for forces that act between two instants: every scaled
+    /// quantity is (1 − w)·(its value at t₀) + w·(its value at t₁), the
     /// prescribed maps and translations included (a time step whose forces
     /// act at its midpoint takes w = ½).
-    void apply_load_factors(double s0, double s1, double w);
+    void apply_time(double t0, double t1, double w);
     /// The nodes of every Dirichlet set, flagged: 1 prescribed, 0 free.
     Eigen::VectorXd fixed_flags() const;
 };

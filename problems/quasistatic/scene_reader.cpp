@@ -47,6 +47,7 @@ Scene parse_scene(const std::string& text, const std::string& document, const st
         else if (part->required())
             root.at(part->key());  // InputError: missing key
     }
+    check_scaled_quantities(assembly);
 
     assembly.options.name = scene.name;
     auto total = at_place(root, [&] { return std::make_shared<TotalPotential>(assembly.terms); });

@@ -294,9 +294,9 @@ TEST_CASE("bad scene input gives one InputError naming the document and the JSON
         Case{replaced(good, "\"density\": 1000", "\"activation\": -4.9e-324"),
              "materials[0].activation: must lie in [0, 1], got -4.9e-324"},
         Case{replaced(good, "\"translation\": [0.2, 0, 0]", "\"map\": [[1, 0, 0], [0, 1, 0], [0, 0, 0]]"),
-             "boundary[1].map: the map has the real eigenvalue 0 <= 0"},
+             "boundary[1].map: the map has the real eigenvalue 0: I + s(M - I) is singular at s = 1, within the factors [0, 1]"},
         Case{replaced(good, "\"translation\": [0.2, 0, 0]", "\"map\": [[-1, 0, 0], [0, 1, 0], [0, 0, 1]]"),
-             "boundary[1].map: the map has the real eigenvalue -1 <= 0"},
+             "boundary[1].map: the map has the real eigenvalue -1: I + s(M - I) is singular at s = 0.5, within the factors [0, 1]"},
         Case{replaced(good, "\"translation\": [0.2, 0, 0]", "\"rotation\": {\"angle_deg\": 1e308, \"axis\": [1, 0, 0]}"),
              "boundary[1].rotation.angle_deg: must lie in [-36000, 36000], got 1e308"});
     CAPTURE(c.text);

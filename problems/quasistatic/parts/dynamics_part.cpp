@@ -41,12 +41,14 @@ public:
                 ranged({"damping.mass", "number", "[0, 1e12]", "0", "α (1/s)"}, 0.0, 1e12),
                 ranged({"damping.stiffness", "number", "[0, 1e12]", "0", "β (s); K projected, at each step's start"},
                        0.0, 1e12),
-                {"load_curve", "keyframes", "[[t, s], …], t increasing", "1", "the load factor s(t), piecewise linear"}};
+                {"load_curve", "keyframes", "[[t, s], …], t increasing", "1",
+                 "the load factor s(t), piecewise linear, of every scaled quantity without its own curve"}};
     }
     void read(const JsonCursor& d, SceneAssembly& assembly) const override
     {
         const int dimension = static_cast<int>(assembly.scene.mesh.nodes.rows());
         assembly.scene.dynamics = settings(d, dimension);
+        assembly.load_curve_place = d.find("load_curve");
         add_terms(d, assembly);
     }
 
@@ -98,22 +100,6 @@ private:
         return value;
     }
 
-    /// [[t0, s0], [t1, s1], ...] with t increasing.
-    static KeyframeCurve keyframes(const JsonCursor& list)
-    {
-        if (list.size() == 0)
-            list.fail("expected at least one keyframe [time, value]");
-        std::vector<KeyframeCurve::Keyframe> keys;
-        for (size_t k = 0; k < list.size(); ++k) {
-            const Eigen::VectorXd pair = list[k].vector(2);
-            if (k > 0 && !(pair[0] > keys.back().time))
-                list[k].fail("time " + format_number(pair[0]) + " is not after the previous keyframe's " +
-                             format_number(keys.back().time) + " (keyframes must be in increasing time)");
-            keys.push_back({pair[0], pair[1]});
-        }
-        return KeyframeCurve(std::move(keys));
-    }
-
     /// The lumped masses (every density must be > 0: a node without mass has
     /// no inertia) and the step's inertia and Rayleigh damping terms.
     static void add_terms(const JsonCursor& d, SceneAssembly& assembly)
@@ -126,13 +112,6 @@ private:
                        "' has density 0; a scene with dynamics needs a density > 0 (mass) on every material");
         scene.node_masses = at_place(d, [&] { return lumped_masses(scene.mesh, assembly.densities); });
         const DynamicsSettings& settings = *scene.dynamics;
-        const double largest_activation =
-            scene.target_activations.size() > 0 ? scene.target_activations.maxCoeff() : 0.0;
-        for (const KeyframeCurve::Keyframe& k : settings.load_factor.keyframes())
-            if (largest_activation > 0.0 && (k.value < 0.0 || k.value * largest_activation > 1.0))
-                d.at("load_curve").fail("the load factor " + format_number(k.value) +
-                                        " takes an activation out of [0, 1] (largest activation " +
-                                        format_number(largest_activation) + ")");
         scene.inertia = std::make_shared<InertiaPotential>("inertia", dimension, scene.node_masses);
         assembly.terms.push_back(scene.inertia);
         if (settings.mass_damping > 0.0) {

@@ -7,7 +7,9 @@
 namespace sinew {
 namespace {
 
-/// "gravity": g on the lumped masses of the materials' densities.
+/// "gravity": g on the lumped masses of the materials' densities, as a
+/// vector, or {"acceleration": g, "curve": s(t)} to give it its own curve in
+/// a scene stepped in time.
 class GravityPart final : public ScenePart {
 public:
     std::string key() const override { return "gravity"; }
@@ -17,16 +19,37 @@ public:
     }
     std::string kind() const override { return "potential"; }
     int stage() const override { return 30; }
-    std::vector<SceneKey> keys() const override { return {{"", "vector", "finite", "", doc()}}; }
+    std::vector<SceneKey> keys() const override
+    {
+        return {{"", "vector | object", "[g…] or {acceleration, curve}", "", doc()},
+                {"acceleration", "vector", "finite", "", "g (m/s²), in the object form", true},
+                {"curve", "keyframes", "[[t, s], …], t increasing", "dynamics.load_curve",
+                 "s(t) scaling g over time (a scene with dynamics)"}};
+    }
     void read(const JsonCursor& g, SceneAssembly& assembly) const override
     {
         Scene& scene = assembly.scene;
         const int dimension = static_cast<int>(scene.mesh.nodes.rows());
-        const Eigen::VectorXd gravity = g.vector(dimension);
-        scene.gravity = at_place(g, [&] {
+        std::optional<JsonCursor> curve;
+        Eigen::VectorXd gravity;
+        if (g.is_object()) {
+            DeclaredKeys(keys()).expect_object(g);
+            gravity = g.at("acceleration").vector(dimension);
+            curve = g.find("curve");
+        } else {
+            gravity = g.vector(dimension);
+        }
+        auto potential = at_place(g, [&] {
             return std::make_shared<GravityPotential>(dimension, lumped_masses(scene.mesh, assembly.densities), gravity);
         });
-        assembly.terms.push_back(scene.gravity);
+        scene.gravity = potential;
+        assembly.terms.push_back(potential);
+        ScaledQuantity q;
+        q.name = "gravity";
+        if (curve)
+            q.curve = keyframes(*curve);
+        q.set = [potential](Scene&, double s0, double s1, double w) { potential->set_scale((1.0 - w) * s0 + w * s1); };
+        assembly.add_scaled(std::move(q), curve ? *curve : g);
     }
 };
 

@@ -17,7 +17,9 @@ public:
     {
         return {{"[].select", "selection", "", "", "the loaded nodes", true},
                 {"[].force_per_node", "vector", "finite", "", "N on each selected node"},
-                {"[].total_force", "vector", "finite", "", "N shared equally by the selected nodes"}};
+                {"[].total_force", "vector", "finite", "", "N shared equally by the selected nodes"},
+                {"[].curve", "keyframes", "[[t, s], …], t increasing", "dynamics.load_curve",
+                 "s(t) scaling this load over time (a scene with dynamics)"}};
     }
     void read(const JsonCursor& list, SceneAssembly& assembly) const override
     {
@@ -27,6 +29,7 @@ public:
         const Mesh& mesh = scene.mesh;
         std::vector<int> nodes;
         std::vector<Eigen::VectorXd> forces;
+        std::vector<ScaledQuantity> scaled;
         for (size_t i = 0; i < list.size(); ++i) {
             const JsonCursor l = list[i];
             declared.expect_object(l, "[]");
@@ -37,6 +40,7 @@ public:
             Eigen::VectorXd f = l.at(per_node ? "force_per_node" : "total_force").vector(dimension);
             if (!per_node)
                 f /= static_cast<double>(selected.size());
+            scaled.push_back(load_quantity(l, i, static_cast<int>(nodes.size()), static_cast<int>(selected.size())));
             for (int node : selected) {
                 nodes.push_back(node);
                 forces.push_back(f);
@@ -47,6 +51,24 @@ public:
             force_matrix.col(static_cast<Eigen::Index>(k)) = forces[k];
         scene.loads = std::make_shared<PointLoadPotential>(dimension, mesh.num_nodes(), nodes, force_matrix);
         assembly.terms.push_back(scene.loads);
+        for (size_t i = 0; i < scaled.size(); ++i) {
+            const JsonCursor l = list[i];
+            assembly.add_scaled(std::move(scaled[i]), l.has("curve") ? l.at("curve") : l);
+        }
+    }
+
+private:
+    /// Entry i of "loads", the potential's loads [first, first + count).
+    static ScaledQuantity load_quantity(const JsonCursor& l, size_t i, int first, int count)
+    {
+        ScaledQuantity q;
+        q.name = "loads[" + std::to_string(i) + "]";
+        if (auto curve = l.find("curve"))
+            q.curve = keyframes(*curve);
+        q.set = [first, count](Scene& scene, double s0, double s1, double w) {
+            scene.loads->set_scale((1.0 - w) * s0 + w * s1, first, count);
+        };
+        return q;
     }
 };
 

@@ -1,6 +1,7 @@
 #include "sinew/problems/quasistatic/parts/scene_part.hpp"
 #include "sinew/problems/quasistatic/parts/scene_reading.hpp"
 
+#include "sinew/core/format_number.hpp"
 #include "sinew/energies/potentials/element_model.hpp"
 #include "sinew/mesh/helical_fibers.hpp"
 #include "sinew/mesh/mesh_validation.hpp"
@@ -20,7 +21,9 @@ struct Material {
     std::optional<JsonCursor> fiber_list;      ///< a fiber per element of the group, in mesh order
     std::optional<JsonCursor> fiber_of_mesh;   ///< "mesh", said explicitly: the mesh must have a fiber field
     std::optional<HelixField> helix;           ///< a helical field, evaluated at each element's rest centroid
-    double activation = 0.0;
+    double activation = 0.0;                   ///< at load factor 1,
+    std::optional<KeyframeCurve> activation_curve;  ///< or α(t), given as keyframes
+    std::optional<JsonCursor> activation_at;
     double damage = 0.0;
 };
 
@@ -75,8 +78,15 @@ Material material(const JsonCursor& m, ElementKind kind, const DeclaredKeys& dec
             v->fail("expected an array of numbers, {\"per_element\": [...]}, {\"helix\": {...}}, or \"mesh\"");
         }
     }
-    if (auto v = m.find("activation"))
-        out.activation = v->number_in(0.0, 1.0);
+    if (auto v = m.find("activation")) {
+        out.activation_at = v;
+        if (v->is_array()) {  // α(t): the keyframes are the activation itself
+            out.activation_curve = keyframes(*v);
+            out.activation = 1.0;
+        } else {
+            out.activation = v->number_in(0.0, 1.0);
+        }
+    }
     if (auto v = m.find("damage"))
         out.damage = v->number_in(0.0, 1.0);
     return out;
@@ -125,11 +135,10 @@ std::vector<Material> group_materials(const JsonCursor& list, const Mesh& mesh, 
 }
 
 
-/// Each element's fiber, damage and target activation from its group's material.
+/// Each element's fiber and damage from its group's material.
 void set_element_data(Scene& scene, const std::vector<Material>& materials)
 {
     const Mesh& mesh = scene.mesh;
-    scene.target_activations.resize(mesh.num_elements());
     std::vector<size_t> rank_in_group(materials.size(), 0);
     std::vector<Eigen::MatrixXd> helical(materials.size());
     for (size_t g = 0; g < materials.size(); ++g)
@@ -154,13 +163,40 @@ void set_element_data(Scene& scene, const std::vector<Material>& materials)
             at_place(fiber, [&] { scene.elastic->set_fiber(e, a); });
         }
         scene.elastic->set_damage(e, m.damage);
-        scene.target_activations[e] = m.activation;
     }
     for (size_t g = 0; g < materials.size(); ++g)
         if (materials[g].fiber_list && materials[g].fiber_list->size() != rank_in_group[g])
             materials[g].fiber_list->fail("has " + std::to_string(materials[g].fiber_list->size()) +
                                           " fibers, group '" + mesh.group_names[g] + "' " +
                                           std::to_string(rank_in_group[g]) + " elements");
+}
+
+/// The activation of group g, α_e = s·α on its elements, as a quantity a
+/// load factor scales (none when the group has no activation).
+void add_activation(const Mesh& mesh, size_t g, const Material& m, SceneAssembly& assembly)
+{
+    if (!m.activation_at || (m.activation == 0.0 && !m.activation_curve))
+        return;
+    std::vector<int> elements;
+    for (int e = 0; e < mesh.num_elements(); ++e)
+        if (static_cast<size_t>(mesh.element_groups[static_cast<size_t>(e)]) == g)
+            elements.push_back(e);
+    const double alpha = m.activation;
+    ScaledQuantity q;
+    q.name = "the activation of group '" + mesh.group_names[g] + "'";
+    q.curve = m.activation_curve;
+    q.set = [elements, alpha](Scene& scene, double s0, double s1, double w) {
+        const double s = (1.0 - w) * s0 + w * s1;
+        for (int e : elements)
+            scene.elastic->set_activation(e, s * alpha);
+    };
+    q.refusal = [alpha](double lowest, double highest) -> std::string {
+        if (lowest * alpha >= 0.0 && highest * alpha <= 1.0)
+            return "";
+        return "takes the activation to [" + format_number(lowest * alpha) + ", " + format_number(highest * alpha) +
+               "], out of [0, 1]";
+    };
+    assembly.add_scaled(std::move(q), *m.activation_at);
 }
 
 /// "materials": one material per mesh group, giving the elastic potential
@@ -182,7 +218,8 @@ public:
                  "the fiber direction a₀ in material space"},
                 {"[].fiber.per_element", "matrix", "", "", "one fiber per element of the group, in mesh order"},
                 {"[].fiber.helix", "object", "{axis, point, angle_deg}", "", "a helical field (tets)"},
-                {"[].activation", "number", "[0, 1]", "0", "muscle activation α at load factor 1"},
+                {"[].activation", "number | keyframes", "[0, 1], or [[t, α], …] with α in [0, 1]", "0",
+                 "muscle activation α at load factor 1, or α(t) over time (a scene with dynamics)"},
                 {"[].damage", "number", "[0, 1]", "0", "damage d"}};
     }
     void read(const JsonCursor& material_list, SceneAssembly& assembly) const override
@@ -203,6 +240,7 @@ public:
         for (size_t g = 0; g < materials.size(); ++g) {
             const Material& m = materials[g];
             assembly.group_has_fiber[g] = m.fiber || m.fiber_list || m.helix || mesh.element_fibers.size() > 0;
+            add_activation(mesh, g, m, assembly);
         }
         assembly.terms.insert(assembly.terms.begin(), scene.elastic);
     }

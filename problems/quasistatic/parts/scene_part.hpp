@@ -47,7 +47,20 @@ struct SceneAssembly {
     std::vector<std::shared_ptr<Potential>> terms;  ///< the potentials, elastic first
     std::vector<DirichletSet> dirichlet_sets;
     QuasistaticOptions options;
+    /// Where each of scene.scaled is written, for its messages: its own
+    /// curve when it has one, else the quantity.
+    std::vector<JsonCursor> scaled_places;
+    std::optional<JsonCursor> load_curve_place;  ///< dynamics.load_curve, when given
+
+    /// Adds a quantity a load factor scales (Scene::scaled), written at `place`.
+    void add_scaled(ScaledQuantity quantity, const JsonCursor& place);
 };
+
+/// Once every part is read: a quantity with its own curve needs the scene's
+/// dynamics, and every quantity must admit the factors it will take (its
+/// curve's, dynamics.load_curve's, or a load step's s ∈ [0, 1]). InputError
+/// at the curve or the quantity otherwise.
+void check_scaled_quantities(const SceneAssembly& assembly);
 
 class ScenePart {
 public:

@@ -1,5 +1,6 @@
 #include "sinew/problems/quasistatic/parts/scene_reading.hpp"
 
+#include "sinew/core/format_number.hpp"
 #include "sinew/problems/quasistatic/node_selection.hpp"
 
 #include <algorithm>
@@ -77,6 +78,21 @@ int group_index(const JsonCursor& where, const Mesh& mesh, const std::string& na
         where.fail("the mesh has no group '" + name + "'; its groups: " + names);
     }
     return static_cast<int>(found - mesh.group_names.begin());
+}
+
+KeyframeCurve keyframes(const JsonCursor& list)
+{
+    if (list.size() == 0)
+        list.fail("expected at least one keyframe [time, value]");
+    std::vector<KeyframeCurve::Keyframe> keys;
+    for (size_t k = 0; k < list.size(); ++k) {
+        const Eigen::VectorXd pair = list[k].vector(2);
+        if (k > 0 && !(pair[0] > keys.back().time))
+            list[k].fail("time " + format_number(pair[0]) + " is not after the previous keyframe's " +
+                         format_number(keys.back().time) + " (keyframes must be in increasing time)");
+        keys.push_back({pair[0], pair[1]});
+    }
+    return KeyframeCurve(std::move(keys));
 }
 
 } // namespace sinew

@@ -5,6 +5,7 @@
 #include "sinew/energies/models/model_parameters.hpp"
 #include "sinew/mesh/mesh.hpp"
 #include "sinew/problems/quasistatic/strict_json.hpp"
+#include "sinew/time/keyframe_curve.hpp"
 
 #include <string>
 #include <vector>
@@ -32,6 +33,10 @@ std::vector<int> selected_nodes(const JsonCursor& s, const Mesh& mesh, double to
 
 /// An object of parameters as text, numbers as written.
 ParameterText parameter_text(const JsonCursor& p);
+
+/// [[t₀, v₀], [t₁, v₁], …]: at least one keyframe, times strictly
+/// increasing, every number finite; an error at the keyframe otherwise.
+KeyframeCurve keyframes(const JsonCursor& list);
 
 /// The index of the mesh group called `name`; an error at `where` listing the groups otherwise.
 int group_index(const JsonCursor& where, const Mesh& mesh, const std::string& name);
