@@ -68,6 +68,7 @@ bool run_entrywise_check(Nlp& nlp, const Eigen::VectorXd& x, const CheckFlags& f
     DerivativeCheckOptions options;
     options.step = flags.step;
     options.seed = flags.seed;
+    options.tolerance = flags.tolerance;
     const auto start = std::chrono::steady_clock::now();
     const DerivativeCheckReport report = check_derivatives(nlp, x, options);
     const bool passed = report.passed(flags.tolerance);

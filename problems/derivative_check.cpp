@@ -2,6 +2,7 @@
 
 #include "sinew/core/format_number.hpp"
 #include "sinew/core/input_error.hpp"
+#include "sinew/problems/difference_study.hpp"
 
 #include <Eigen/Dense>
 
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <map>
 #include <random>
 #include <sstream>
 #include <vector>
@@ -16,34 +18,80 @@
 namespace sinew {
 namespace {
 
-/// One entry of a derivative: the analytic value and its central difference.
+/// One entry of a derivative: the analytic value, its central difference,
+/// the relative error (below) and, when studied, how it was settled.
 struct Entry {
     int row, col;
     double analytic, fd;
+    double error = 0.0;
+    StudyOutcome outcome = StudyOutcome::disagrees;
 };
 
-/// The worst of `entries` by |a − fd| / max(|fd|, floor), floor =
-/// kRelativeErrorFloor·(the largest |a| or |fd| of this derivative): relative
-/// for every entry that matters, and entries far below the derivative's scale
-/// (where central differences carry only round-off) are measured against a
-/// thousandth of it. A non-finite error counts as infinite.
-DerivativeDiscrepancy worst_of(const std::vector<Entry>& entries)
+/// kRelativeErrorFloor·(the largest |a| of this derivative, or the largest
+/// |fd| when every a is 0): entries far below the derivative's scale (where
+/// central differences carry only round-off) are measured against a
+/// thousandth of it. The analytic values set the scale, not a central
+/// difference straddling a jump, which would inflate it.
+double error_floor(const std::vector<Entry>& entries)
 {
-    double scale = 0.0;
-    for (const Entry& e : entries)
-        for (const double v : {e.analytic, e.fd})
-            if (std::isfinite(v))
-                scale = std::max(scale, std::abs(v));
-    const double floor = scale > 0.0 ? kRelativeErrorFloor * scale : 1.0;
+    double analytic_scale = 0.0, difference_scale = 0.0;
+    for (const Entry& e : entries) {
+        if (std::isfinite(e.analytic))
+            analytic_scale = std::max(analytic_scale, std::abs(e.analytic));
+        if (std::isfinite(e.fd))
+            difference_scale = std::max(difference_scale, std::abs(e.fd));
+    }
+    const double scale = analytic_scale > 0.0 ? analytic_scale : difference_scale;
+    return scale > 0.0 ? kRelativeErrorFloor * scale : 1.0;
+}
+
+/// Each entry's |a − fd| / max(|fd|, floor); a non-finite error counts as infinite.
+void set_errors(std::vector<Entry>& entries, double floor)
+{
+    for (Entry& e : entries) {
+        const double error = std::abs(e.analytic - e.fd) / std::max(std::abs(e.fd), floor);
+        e.error = std::isfinite(error) ? error : std::numeric_limits<double>::infinity();
+    }
+}
+
+/// Studies the entries above `tolerance` column by column (study_column()):
+/// entry (row, col) is ∂F_row/∂x_col, or with `transposed` ∂F_col/∂x_row.
+void study(std::vector<Entry>& entries, const PointFunction& F, const Eigen::VectorXd& x, const Eigen::VectorXd& F_at_x,
+           double step, double floor, double tolerance, bool transposed)
+{
+    std::map<int, std::vector<size_t>> by_column;
+    for (size_t k = 0; k < entries.size(); ++k)
+        if (entries[k].outcome == StudyOutcome::disagrees && entries[k].error > tolerance)
+            by_column[transposed ? entries[k].row : entries[k].col].push_back(k);
+    for (const auto& [j, members] : by_column) {
+        std::vector<EntryToStudy> column;
+        for (size_t k : members)
+            column.push_back({transposed ? entries[k].col : entries[k].row, entries[k].analytic, entries[k].fd});
+        const double h = step * std::max(1.0, std::abs(x[j]));
+        const std::vector<StudiedEntry> settled = study_column(F, x, j, h, F_at_x, column, floor, tolerance);
+        for (size_t m = 0; m < members.size(); ++m) {
+            Entry& e = entries[members[m]];
+            if (settled[m].outcome != StudyOutcome::disagrees) {
+                e.outcome = settled[m].outcome;
+                e.error = settled[m].relative_error;
+                e.fd = settled[m].estimate;
+            }
+        }
+    }
+}
+
+/// The worst of `entries` by their errors, with the counts of settled ones.
+DerivativeDiscrepancy worst_of(const std::vector<Entry>& entries, double floor)
+{
     DerivativeDiscrepancy worst;
     worst.entries_compared = static_cast<int>(entries.size());
     worst.error_floor = floor;
     for (const Entry& e : entries) {
-        double error = std::abs(e.analytic - e.fd) / std::max(std::abs(e.fd), floor);
-        if (!std::isfinite(error))
-            error = std::numeric_limits<double>::infinity();
-        if (worst.row < 0 || error > worst.worst_relative_error) {
-            worst.worst_relative_error = error;
+        worst.within_noise += e.outcome == StudyOutcome::noise;
+        worst.at_kink += e.outcome == StudyOutcome::kink;
+        worst.both_sides_agree += e.outcome == StudyOutcome::both_sides;
+        if (worst.row < 0 || e.error > worst.worst_relative_error) {
+            worst.worst_relative_error = e.error;
             worst.row = e.row;
             worst.col = e.col;
             worst.analytic = e.analytic;
@@ -123,7 +171,50 @@ std::string describe(const char* what, const DerivativeDiscrepancy& d, bool two_
         out << "[" << d.row << "]";
     out << " (analytic " << d.analytic << ", finite difference " << d.finite_difference << "), "
         << d.entries_compared << " entries compared";
+    if (d.within_noise + d.at_kink + d.both_sides_agree > 0)
+        out << "; settled by a closer study: " << d.within_noise << " within round-off noise, " << d.at_kink
+            << " at a kink (one side agrees), " << d.both_sides_agree
+            << " where both one-sided differences agree";
     return out.str();
+}
+
+/// Studies the entries central differences disagree with (study()) and
+/// fills the report: f for the gradient, c for the Jacobian, ∇L for the
+/// Hessian, whose entry (i, j) is studied along x_j, then along x_i.
+void settle(Nlp& nlp, const Eigen::VectorXd& x, const DerivativeCheckOptions& options, const Eigen::VectorXd& lambda,
+            std::vector<Entry>& gradient, std::vector<Entry>& jacobian, std::vector<Entry>& hessian,
+            DerivativeCheckReport& report)
+{
+    const PointFunction objective = [&](const Eigen::VectorXd& y) {
+        return Eigen::VectorXd::Constant(1, nlp.objective(y));
+    };
+    const PointFunction constraints = [&](const Eigen::VectorXd& y) {
+        Eigen::VectorXd c(nlp.num_constraints());
+        nlp.constraints(y, c);
+        return c;
+    };
+    const PointFunction lagrangian = [&](const Eigen::VectorXd& y) {
+        return lagrangian_gradient(nlp, y, options.sigma, lambda);
+    };
+    const std::pair<std::vector<Entry>*, const PointFunction*> derivatives[] = {
+        {&gradient, &objective}, {&jacobian, &constraints}, {&hessian, &lagrangian}};
+    DerivativeDiscrepancy* reported[] = {&report.gradient, &report.jacobian, &report.hessian};
+    for (int d = 0; d < 3; ++d) {
+        std::vector<Entry>& entries = *derivatives[d].first;
+        const PointFunction& F = *derivatives[d].second;
+        const double floor = error_floor(entries);
+        set_errors(entries, floor);
+        if (!entries.empty()) {
+            const Eigen::VectorXd F_at_x = F(x);
+            if (d == 0)  // gradient entries are (j, 0): ∂f/∂x_j
+                study(entries, F, x, F_at_x, options.step, floor, options.tolerance, true);
+            else
+                study(entries, F, x, F_at_x, options.step, floor, options.tolerance, false);
+            if (d == 2)
+                study(entries, F, x, F_at_x, options.step, floor, options.tolerance, true);
+        }
+        *reported[d] = worst_of(entries, floor);
+    }
 }
 
 } // namespace
@@ -191,6 +282,9 @@ DerivativeCheckReport check_derivatives(Nlp& nlp, Nlp::ConstVectorRef x_in, cons
                          " is invalid; it must be a positive finite number");
     if (!std::isfinite(options.sigma))
         throw InputError("derivative check: sigma = " + format_number(options.sigma) + " is not finite");
+    if (!(options.tolerance > 0.0 && std::isfinite(options.tolerance)))
+        throw InputError("derivative check: tolerance = " + format_number(options.tolerance) +
+                         " is invalid; it must be a positive finite number");
     const Eigen::VectorXd x = x_in;
     if (!x.allFinite())
         throw InputError("derivative check of " + nlp.name() + ": the point x is not finite");
@@ -246,9 +340,7 @@ DerivativeCheckReport check_derivatives(Nlp& nlp, Nlp::ConstVectorRef x_in, cons
     for (int j = 0; j < n; ++j)
         for (int i = j; i < n; ++i)
             hessian_entries.push_back({i, j, hessian(i, j), 0.5 * (hessian_fd(i, j) + hessian_fd(j, i))});
-    report.gradient = worst_of(gradient_entries);
-    report.jacobian = worst_of(jacobian_entries);
-    report.hessian = worst_of(hessian_entries);
+    settle(nlp, x, options, lambda, gradient_entries, jacobian_entries, hessian_entries, report);
     return report;
 }
 

@@ -13,12 +13,12 @@ inline constexpr double kRelativeErrorFloor = 1e-3;
 /// (a 4000 x 4000 matrix of doubles is 128 MB) ...
 inline constexpr int kMaxCheckedVariables = 4000;
 /// ... or whose dense check would hold more than this many bytes
-/// (dense_check_bytes(); 1 GiB, 448 MB for n = 4000 and m = 0).
+/// (dense_check_bytes(); 1 GiB, 576 MB for n = 4000 and m = 0).
 inline constexpr std::uint64_t kMaxDenseCheckBytes = std::uint64_t{1} << 30;
 
 /// Bytes check_derivatives() holds for n variables and m constraints: ∇²L and
 /// its differenced twin (two n × n matrices of doubles), J (m × n doubles) and
-/// one 24-byte record per compared entry (n(n+1)/2 + m·n + n of them).
+/// one 40-byte record per compared entry (n(n+1)/2 + m·n + n of them).
 std::uint64_t dense_check_bytes(int n, int m);
 
 /// Empty when check_derivatives() takes `nlp`; otherwise one line saying why
@@ -34,7 +34,8 @@ std::string find_pattern_problem(const Nlp& nlp);
 /// Hessian) between the analytic values and central finite differences.
 struct DerivativeDiscrepancy {
     /// |analytic − fd| / max(|fd|, error_floor), error_floor =
-    /// kRelativeErrorFloor · (largest |analytic| or |fd| of this derivative).
+    /// kRelativeErrorFloor · (largest |analytic| of this derivative, or
+    /// largest |fd| when every analytic value is 0).
     double worst_relative_error = 0.0;
     double error_floor = 0.0;
     int row = -1;                       ///< where it is (-1: nothing compared)
@@ -42,6 +43,15 @@ struct DerivativeDiscrepancy {
     double analytic = 0.0;
     double finite_difference = 0.0;
     int entries_compared = 0;
+    /// Entries central differences at the check's step disagree with
+    /// (beyond the tolerance) that a closer study of their column settled
+    /// (study_column(), difference_study.hpp): within the differences'
+    /// round-off noise, at a kink (one one-sided difference agrees, the two
+    /// sides do not), or where both one-sided differences agree.
+    /// Their errors are then those the study found.
+    int within_noise = 0;
+    int at_kink = 0;
+    int both_sides_agree = 0;
 };
 
 struct DerivativeCheckReport {
@@ -61,6 +71,9 @@ struct DerivativeCheckOptions {
     double step = 1e-6;      ///< central-difference step, scaled by max(1, |x_i|)
     double sigma = 1.0;      ///< objective factor in ∇²L
     unsigned seed = 7;       ///< for the random multipliers λ in ∇²L
+    /// Entries whose relative error exceeds this are studied more closely
+    /// (noise, kinks, smaller steps) before they count as disagreeing.
+    double tolerance = 1e-5;
 };
 
 /// Compares gradient, Jacobian and Hessian of the Lagrangian (with random λ)

@@ -22,6 +22,11 @@ inline constexpr double kTaylorSlopeSpread = 0.1;
 enum class TaylorVerdict {
     failed,          ///< measured slope below the threshold: a wrong derivative
     not_measurable,  ///< too few steps above round-off, or f not finite along d; not a pass
+    /// slope below the threshold, but the differenced quantity has a kink at
+    /// the point along d (its second difference does not shrink with h: no
+    /// derivative exists there to judge); a pass only where the same
+    /// derivative passes at another point
+    kink,
     passed,          ///< measured slope at or above the threshold
     exact,           ///< remainder at round-off at every step (f quadratic, ∇L or c linear along d); a pass
 };
@@ -46,6 +51,9 @@ struct TaylorResult {
     TaylorSeries worst;   ///< lowest verdict, then lowest slope
     int point = -1;       ///< where the worst series is (point 0 is the x given)
     int direction = -1;
+    int points_passed = 0;  ///< points where every direction passed (or was exact)
+    /// Every series passed, or the worst is a kink and the derivative passed
+    /// along every direction at another point.
     bool passed() const;
 };
 
