@@ -71,7 +71,7 @@ struct Strategy {
 /// The solvers suite constrained compares (unless --solver chooses): those
 /// for equality constraints and bounds.
 const std::vector<std::string> kConstrainedStrategies = {
-    "ipopt", "nlopt-slsqp", "nlopt-auglag", "kkt-newton", "relaxed-kkt", "penalty", "augmented-lagrangian"};
+    "ipopt", "nlopt-slsqp", "nlopt-auglag", "kkt-newton", "interior-point", "relaxed-kkt", "penalty", "augmented-lagrangian"};
 
 /// Every solver chosen, once; relaxed-kkt at κ = 1e4 and 1e8 in suite
 /// constrained, where its finite-κ violation is what the comparison shows.

@@ -7,6 +7,7 @@
 #include "sinew/solvers/constrained/kkt_newton.hpp"
 #include "sinew/solvers/constrained/penalty_method.hpp"
 #include "sinew/solvers/constrained/relaxed_kkt.hpp"
+#include "sinew/solvers/interior/interior_point.hpp"
 #include "sinew/solvers/kkt_measures.hpp"
 #include "sinew/solvers/newton/projected_newton.hpp"
 
@@ -46,6 +47,7 @@ const std::vector<std::unique_ptr<Solver>>& all_solvers()
             all.push_back(std::move(s));
         all.push_back(make_projected_newton_solver());
         all.push_back(make_kkt_newton_solver());
+        all.push_back(make_interior_point_solver());
         all.push_back(make_relaxed_kkt_solver());
         all.push_back(make_penalty_solver());
         all.push_back(make_augmented_lagrangian_solver());

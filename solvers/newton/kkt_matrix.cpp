@@ -44,6 +44,17 @@ const SparseMatrix& KktMatrix::fill(const Eigen::VectorXd& hessian_values, const
     return matrix_.matrix();
 }
 
+const SparseMatrix& KktMatrix::fill(const Eigen::VectorXd& hessian_values, const Eigen::VectorXd& jacobian_values,
+                                    const Eigen::VectorXd& primal_diagonal, const Eigen::VectorXd& constraint_diagonal)
+{
+    values_.head(hessian_nonzeros_) = hessian_values;
+    values_.segment(hessian_nonzeros_, n_) = primal_diagonal;
+    values_.segment(hessian_nonzeros_ + n_, jacobian_nonzeros_) = jacobian_values;
+    values_.tail(m_) = -constraint_diagonal;
+    matrix_.fill(values_);
+    return matrix_.matrix();
+}
+
 SchurComplementPattern::SchurComplementPattern(const SparsityPattern& hessian, const SparsityPattern& jacobian, int m)
     : hessian_nonzeros_(hessian.nonzeros()), pattern_(hessian)
 {

@@ -24,6 +24,11 @@ public:
     /// (may be empty) get an identity row and column: their step is zero.
     const SparseMatrix& fill(const Eigen::VectorXd& hessian_values, const Eigen::VectorXd& jacobian_values,
                              double jacobian_sign, double delta_w, double delta_c, const std::vector<char>& fixed);
+    /// K = [H + diag(d_w), Jᵀ; J, −diag(d_c)]: one diagonal entry per variable
+    /// and per constraint (an interior-point method's barrier terms Σ + δw and
+    /// its δc), s = +1.
+    const SparseMatrix& fill(const Eigen::VectorXd& hessian_values, const Eigen::VectorXd& jacobian_values,
+                             const Eigen::VectorXd& primal_diagonal, const Eigen::VectorXd& constraint_diagonal);
     int size() const { return n_ + m_; }
 
 private:
