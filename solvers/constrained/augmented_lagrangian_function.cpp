@@ -8,9 +8,11 @@ AugmentedLagrangianFunction::AugmentedLagrangianFunction(Nlp& problem)
     : problem_(problem), constraints_(problem),
       schur_(problem.hessian_pattern(), problem.jacobian_pattern(), problem.num_constraints()),
       lambda_(Eigen::VectorXd::Zero(problem.num_constraints())), start_(problem.starting_point()),
-      c_(problem.num_constraints()), jacobian_(problem.jacobian_pattern().nonzeros()),
-      weights_(problem.num_constraints()), problem_hessian_(problem.hessian_pattern().nonzeros()),
-      values_(schur_.pattern().nonzeros()), constraint_gradient_(problem.num_variables())
+      c_(problem.num_constraints()), r_(problem.num_constraints()), multipliers_(problem.num_constraints()),
+      active_(problem.num_constraints()), jacobian_(problem.jacobian_pattern().nonzeros()),
+      active_jacobian_(problem.jacobian_pattern().nonzeros()), weights_(problem.num_constraints()),
+      problem_hessian_(problem.hessian_pattern().nonzeros()), values_(schur_.pattern().nonzeros()),
+      constraint_gradient_(problem.num_variables())
 {
 }
 
@@ -18,6 +20,12 @@ void AugmentedLagrangianFunction::set_parameters(const Eigen::VectorXd& lambda, 
 {
     lambda_ = lambda;
     kappa_ = kappa;
+}
+
+void AugmentedLagrangianFunction::evaluate_rows()
+{
+    constraints_.values(x_, c_);
+    constraints_.shifted(c_, lambda_, kappa_, r_, multipliers_, active_);
 }
 
 double AugmentedLagrangianFunction::objective(ConstVectorRef x)
@@ -28,8 +36,8 @@ double AugmentedLagrangianFunction::objective(ConstVectorRef x)
     if (!std::isfinite(f))
         return f;
     x_ = x;
-    constraints_.residuals(x_, c_);
-    return f + lambda_.dot(c_) + 0.5 * kappa_ * c_.squaredNorm();  // φ = f + λᵀc̃ + κ/2‖c̃‖²
+    evaluate_rows();
+    return f + lambda_.dot(r_) + 0.5 * kappa_ * r_.squaredNorm();  // φ = f + Σ λᵢrᵢ + κ/2 rᵢ²
 }
 
 void AugmentedLagrangianFunction::gradient(ConstVectorRef x, VectorRef grad)
@@ -39,22 +47,24 @@ void AugmentedLagrangianFunction::gradient(ConstVectorRef x, VectorRef grad)
     last_g_ = grad;
     // f is known when the line search's accepted point is this x (it usually is).
     last_f_ = x_ == objective_x_ ? objective_f_ : problem_.objective(x_);
-    constraints_.residuals(x_, c_);
+    evaluate_rows();
+    last_violation_ = constraints_.max_violation(c_);
     constraints_.jacobian(x_, jacobian_);
-    weights_ = lambda_ + kappa_ * c_;
-    constraints_.transpose_times(jacobian_, weights_, constraint_gradient_);
-    grad += constraint_gradient_;  // ∇φ = ∇f + Jᵀ(λ + κc̃)
+    constraints_.transpose_times(jacobian_, multipliers_, constraint_gradient_);
+    grad += constraint_gradient_;  // ∇φ = ∇f + Jᵀμ
 }
 
 void AugmentedLagrangianFunction::fill(ConstVectorRef x, double sigma, Projection projection, VectorRef values)
 {
     x_ = x;
-    constraints_.residuals(x_, c_);
+    evaluate_rows();
     constraints_.jacobian(x_, jacobian_);
-    weights_ = sigma * (lambda_ + kappa_ * c_);
-    // σ∇²f + Σᵢ σ(λᵢ + κc̃ᵢ)∇²cᵢ, then + σκJᵀJ.
+    weights_ = sigma * multipliers_;
+    // σ∇²f + Σᵢ σμᵢ∇²cᵢ, then + σκ Σ_{i active} ∇cᵢ∇cᵢᵀ: the Schur pattern
+    // keeps every row, an inactive one with its Jacobian row zeroed.
     problem_.hessian(x_, sigma, weights_, projection, problem_hessian_);
-    schur_.fill(problem_hessian_, jacobian_, sigma * kappa_, values_);
+    constraints_.scale_rows(jacobian_, active_, active_jacobian_);
+    schur_.fill(problem_hessian_, active_jacobian_, sigma * kappa_, values_);
     values = values_;
 }
 
