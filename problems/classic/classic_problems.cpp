@@ -1,5 +1,6 @@
 #include "sinew/problems/classic/classic_problems.hpp"
 
+#include "sinew/problems/classic/hs003.hpp"
 #include "sinew/problems/classic/hs004.hpp"
 #include "sinew/problems/classic/hs005.hpp"
 #include "sinew/problems/classic/hs006.hpp"
@@ -27,8 +28,10 @@
 #include "sinew/problems/classic/hs077.hpp"
 #include "sinew/problems/classic/hs078.hpp"
 #include "sinew/problems/classic/hs079.hpp"
+#include "sinew/problems/classic/hs081.hpp"
 #include "sinew/problems/classic/hs100.hpp"
 #include "sinew/problems/classic/hs110.hpp"
+#include "sinew/problems/classic/hs112.hpp"
 #include "sinew/problems/classic/rosenbrock.hpp"
 
 #include <cmath>
@@ -105,6 +108,8 @@ std::vector<BuiltinProblem> classic_problems()
                           [] { return std::make_unique<Hs076>(); }, -4.681818181),
         hock_schittkowski("hs100", 100, "7 variables, 4 inequalities",
                           [] { return std::make_unique<Hs100>(); }, 680.6300573),
+        constrained("hs003", 3, "2 variables, bounds (singular Hessian, f linear along (1, 1))",
+                    [] { return std::make_unique<Hs003>(); }, 0.0),
         constrained("hs004", 4, "2 variables, bounds (both active at the optimum)",
                     [] { return std::make_unique<Hs004>(); }, 8.0 / 3.0),
         constrained("hs005", 5, "2 variables, bounds (nonconvex)",
@@ -145,8 +150,14 @@ std::vector<BuiltinProblem> classic_problems()
                     [] { return std::make_unique<Hs078>(); }, -2.91970041, "f* as printed, 9 digits"),
         constrained("hs079", 79, "5 variables, 3 equalities (nonconvex)",
                     [] { return std::make_unique<Hs079>(); }, 0.0787768209, "f* as printed, 9 digits"),
+        constrained("hs081", 81, "5 variables, bounds, 3 equalities (nonconvex)",
+                    [] { return std::make_unique<Hs081>(); }, 0.0539498478, "f* as printed, 9 digits"),
         constrained("hs110", 110, "10 variables, bounds (Paviani, nonconvex)",
                     [] { return std::make_unique<Hs110>(); }, -45.77846971, "f* as printed, 10 digits"),
+        constrained("hs112", 112, "10 variables, bounds, 3 equalities (chemical equilibrium, convex)",
+                    [] { return std::make_unique<Hs112>(); }, -47.76109026,
+                    "f* as printed in the later listings, 10 digits, right to 7 (the KKT point gives "
+                    "-47.7610908594); the 1981 book prints -47.707579 at a point that is not a minimizer"),
     };
 }
 

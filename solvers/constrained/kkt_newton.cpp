@@ -2,6 +2,7 @@
 
 #include "sinew/core/format_number.hpp"
 #include "sinew/solvers/constrained/equality_constraints.hpp"
+#include "sinew/solvers/kkt_measures.hpp"
 #include "sinew/solvers/newton/active_bounds.hpp"
 #include "sinew/solvers/newton/kkt_matrix.hpp"
 #include "sinew/solvers/newton/line_search.hpp"
@@ -63,6 +64,7 @@ private:
     double merit(double f, const VectorXd& c) const { return f + nu_ * c.lpNorm<1>(); }
     double merit_at(const VectorXd& x);
     bool second_order_correction(double merit0, double slope);
+    void update_multipliers(double primal_before_step);
     Result finish(Status status, const std::string& message);
 
     Nlp& nlp_;
@@ -173,6 +175,29 @@ double KktNewtonRun::merit_slope()
     return gd + nu_ * violation_slope;
 }
 
+/// λ after a step. The KKT system's λ⁺ whatever α (a step shortened by the
+/// line search still gives λ⁺ at x), except
+/// - when the inertia correction added δw > 0: then ∇f + Jᵀλ⁺ = −(H + δw I)d
+///   carries δw·d, which grows with δw while c̃ ≠ 0 and feeds back through
+///   H = ∇²f + Σλᵢ∇²cᵢ into a larger δw (HS 81 from its start: λ to 1e8,
+///   δw to 1e10, then a stall). λ is then the least-squares estimate at x,
+///   which has no δw in it;
+/// - far from feasibility (‖c̃‖∞ > √tol), when J is rank-deficient (δc > 0):
+///   λ⁺ of a singular system says nothing of λ* and is not taken. Near
+///   feasibility such a λ⁺ is a valid choice among many multipliers.
+void KktNewtonRun::update_multipliers(double primal_before_step)
+{
+    const FactorizationAttempt& used = factorization_.attempts().back();
+    if (used.delta_w > 0.0) {
+        VectorXd z_lower, z_upper;
+        estimate_multipliers(nlp_, x_, std::sqrt(options_.constraint_tolerance), lambda_, z_lower, z_upper);
+        recorder_.count_evaluation();
+        return;
+    }
+    if (used.delta_c == 0.0 || primal_before_step <= std::sqrt(options_.tolerance))
+        lambda_ = lambda_plus_;
+}
+
 Result KktNewtonRun::finish(Status status, const std::string& message)
 {
     recorder_.add_statistic("max_delta_w", max_delta_w_);
@@ -261,15 +286,7 @@ Result KktNewtonRun::run()
         alpha = search.alpha;
         step_norm = (trial_ - x_).cwiseAbs().maxCoeff();
         x_ = trial_;
-        // λ takes the KKT system's multipliers whatever α (a step shortened by
-        // the line search still gives λ⁺ at x), except, far from feasibility,
-        // those of a singular system (δc > 0: J rank-deficient), which say
-        // nothing of λ* and would spoil H = ∇²f + Σλᵢ∇²cᵢ for many steps.
-        // Near feasibility (‖c̃‖∞ ≤ √tol) a rank-deficient J's regularized λ⁺
-        // is a valid choice among many multipliers and is taken.
-        const bool regularized = factorization_.attempts().back().delta_c > 0.0;
-        if (!regularized || primal_before_step <= std::sqrt(options_.tolerance))
-            lambda_ = lambda_plus_;
+        update_multipliers(primal_before_step);
         f_ = nlp_.objective(x_);
         recorder_.count_evaluation();
         evaluate_first_order();

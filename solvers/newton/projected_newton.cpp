@@ -261,6 +261,14 @@ bool ProjectedNewtonRun::newton_step(bool& exact)
         return false;
     if (!(gradient_.dot(step_) < 0.0))
         step_ = rhs_;  // not a descent direction: steepest descent
+    // The longest step tried: 1e3 max(1, ‖x‖) (Dennis & Schnabel's maxstep,
+    // "Numerical Methods for Unconstrained Optimization", §6.3 and A6.3.1).
+    // A nearly singular H's Newton step (HS 3: f linear along a null vector
+    // of H, shifted by 1e-8 of its diagonal) can overshoot by 1e12, more than
+    // the line search's halvings undo; the cap leaves it a few.
+    const double longest = 1e3 * std::max(1.0, x_.norm());
+    if (step_.norm() > longest)
+        step_ *= longest / step_.norm();
     return true;
 }
 
