@@ -177,22 +177,27 @@ double KktNewtonRun::merit_slope()
 
 /// λ after a step. The KKT system's λ⁺ whatever α (a step shortened by the
 /// line search still gives λ⁺ at x), except
-/// - when the inertia correction added δw > 0: then ∇f + Jᵀλ⁺ = −(H + δw I)d
+/// - when the inertia correction added δw > 0 and λ⁺ is more than ten times
+///   the least-squares multipliers at x (∞-norm): ∇f + Jᵀλ⁺ = −(H + δw I)d
 ///   carries δw·d, which grows with δw while c̃ ≠ 0 and feeds back through
 ///   H = ∇²f + Σλᵢ∇²cᵢ into a larger δw (HS 81 from its start: λ to 1e8,
-///   δw to 1e10, then a stall). λ is then the least-squares estimate at x,
-///   which has no δw in it;
+///   δw to 1e10, then a stall). λ is then the least-squares estimate, which
+///   has no δw in it (a reset like Ipopt's constr_mult_reset_threshold);
 /// - far from feasibility (‖c̃‖∞ > √tol), when J is rank-deficient (δc > 0):
 ///   λ⁺ of a singular system says nothing of λ* and is not taken. Near
 ///   feasibility such a λ⁺ is a valid choice among many multipliers.
 void KktNewtonRun::update_multipliers(double primal_before_step)
 {
     const FactorizationAttempt& used = factorization_.attempts().back();
-    if (used.delta_w > 0.0) {
-        VectorXd z_lower, z_upper;
-        estimate_multipliers(nlp_, x_, std::sqrt(options_.constraint_tolerance), lambda_, z_lower, z_upper);
+    if (used.delta_w > 0.0 && m_ > 0) {
+        VectorXd least_squares, z_lower, z_upper;
+        estimate_multipliers(nlp_, x_, std::sqrt(options_.constraint_tolerance), least_squares, z_lower, z_upper);
         recorder_.count_evaluation();
-        return;
+        if (lambda_plus_.cwiseAbs().maxCoeff() > 10.0 * std::max(1.0, least_squares.cwiseAbs().maxCoeff())) {
+            lambda_ = least_squares;
+            recorder_.add_statistic("multiplier_resets", 1.0);
+            return;
+        }
     }
     if (used.delta_c == 0.0 || primal_before_step <= std::sqrt(options_.tolerance))
         lambda_ = lambda_plus_;
