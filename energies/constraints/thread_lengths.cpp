@@ -82,9 +82,10 @@ void ThreadLengths::values(ConstVectorRef x, VectorRef c)
     for (int k = 0; k < num_constraints(); ++k) {
         const auto [i, j] = segments_[k];
         const double length = rest_lengths_[k];
-        // c = |x_j − x_i|² − L²
-        c[k] = (x.segment(j * dimension_, dimension_) - x.segment(i * dimension_, dimension_)).squaredNorm() -
-               length * length;
+        // c = |x_j − x_i|² / L² − 1
+        c[k] = (x.segment(j * dimension_, dimension_) - x.segment(i * dimension_, dimension_)).squaredNorm() /
+                   (length * length) -
+               1.0;
     }
 }
 
@@ -93,10 +94,11 @@ void ThreadLengths::jacobian_values(ConstVectorRef x, VectorRef values)
     int entry = 0;
     for (int k = 0; k < num_constraints(); ++k) {
         const auto [i, j] = segments_[k];
-        for (int m = 0; m < dimension_; ++m)  // ∂c/∂x_i = −2 (x_j − x_i)
-            values[entry++] = -2.0 * (x[j * dimension_ + m] - x[i * dimension_ + m]);
-        for (int m = 0; m < dimension_; ++m)  // ∂c/∂x_j = 2 (x_j − x_i)
-            values[entry++] = 2.0 * (x[j * dimension_ + m] - x[i * dimension_ + m]);
+        const double scale = 2.0 / (rest_lengths_[k] * rest_lengths_[k]);
+        for (int m = 0; m < dimension_; ++m)  // ∂c/∂x_i = −2 (x_j − x_i) / L²
+            values[entry++] = -scale * (x[j * dimension_ + m] - x[i * dimension_ + m]);
+        for (int m = 0; m < dimension_; ++m)  // ∂c/∂x_j = 2 (x_j − x_i) / L²
+            values[entry++] = scale * (x[j * dimension_ + m] - x[i * dimension_ + m]);
     }
 }
 
@@ -104,8 +106,9 @@ void ThreadLengths::hessian_values(ConstVectorRef, ConstVectorRef lambda, Projec
 {
     int entry = 0;
     for (int k = 0; k < num_constraints(); ++k) {
-        // λ∇²c = 2λ [I −I; −I I], PSD up to the sign of λ: projected, max(λ, 0).
-        const double weight = projection == Projection::clamp ? std::max(lambda[k], 0.0) : lambda[k];
+        // λ∇²c = 2λ/L² [I −I; −I I], PSD up to the sign of λ: projected, max(λ, 0).
+        const double weight = (projection == Projection::clamp ? std::max(lambda[k], 0.0) : lambda[k]) /
+                              (rest_lengths_[k] * rest_lengths_[k]);
         for (int m = 0; m < dimension_; ++m) {
             values[entry++] = 2.0 * weight;
             values[entry++] = 2.0 * weight;

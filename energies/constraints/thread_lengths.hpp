@@ -10,10 +10,14 @@ namespace sinew {
 /// their rest lengths (DESIGN.md, "Constraints"; the discrete form of seed 004
 /// §4.1's a₀ᵀ C a₀ = 1 along a thread). One constraint per segment (i, j):
 ///
-///     c(x) = |x_j − x_i|² − L_ij²,    L_ij = |X_j − X_i|,
+///     c(x) = |x_j − x_i|² / L_ij² − 1,    L_ij = |X_j − X_i|,
 ///
-///     ∂c/∂x_i = −2 (x_j − x_i),   ∂c/∂x_j = 2 (x_j − x_i),
-///     ∇²c = 2 [I −I; −I I]   (constant, PSD).
+///     ∂c/∂x_i = −2 (x_j − x_i) / L²,   ∂c/∂x_j = 2 (x_j − x_i) / L²,
+///     ∇²c = 2/L² [I −I; −I I]   (constant, PSD).
+///
+/// c is the segment's squared stretch minus one, dimensionless like
+/// a₀ᵀCa₀ − 1, so that a constraint tolerance means the same relative length
+/// error on every segment whatever its length.
 ///
 /// Under Projection::clamp λ∇²c is projected onto the PSD cone: max(λ, 0)∇²c.
 ///
@@ -36,7 +40,7 @@ public:
 
     std::string name() const override { return "thread lengths"; }
     int num_constraints() const override { return static_cast<int>(segments_.size()); }
-    /// c_k = |x_j − x_i|² − L_k² for segment k = (i, j).
+    /// c_k = |x_j − x_i|² / L_k² − 1 for segment k = (i, j).
     void values(ConstVectorRef x, VectorRef c) override;
     const SparsityPattern& jacobian_pattern() const override { return jacobian_; }
     void jacobian_values(ConstVectorRef x, VectorRef values) override;

@@ -45,7 +45,7 @@ WeakFiberInextensibility::WeakFiberInextensibility(const Mesh& mesh, std::vector
         }
     const Eigen::VectorXd extent = (upper - lower).cwiseMax(1e-300);
     std::vector<int> members(static_cast<size_t>(cells.prod()), 0);
-    volumes_.resize(static_cast<Eigen::Index>(listed.size()));
+    weights_.resize(static_cast<Eigen::Index>(listed.size()));
     for (size_t k = 0; k < listed.size(); ++k) {
         const int e = listed[k];
         Eigen::VectorXd centroid = Eigen::VectorXd::Zero(dimension);
@@ -59,13 +59,19 @@ WeakFiberInextensibility::WeakFiberInextensibility(const Mesh& mesh, std::vector
         }
         ++members[static_cast<size_t>(cell)];
         row_of_element_.push_back(cell);
-        volumes_[static_cast<Eigen::Index>(k)] = rest_measure(mesh, e);  // V_e
+        weights_[static_cast<Eigen::Index>(k)] = rest_measure(mesh, e);  // V_e
     }
     const auto empty = std::find(members.begin(), members.end(), 0);
     if (empty != members.end())
         throw InputError("weak fiber inextensibility: cell " +
                          cell_name(static_cast<int>(empty - members.begin()), cells) +
                          " over the constrained elements holds no element's centroid; use fewer cells");
+    // w_e = V_e / V_z, V_z = Σ_{e∈z} V_e: each row a volume-weighted mean.
+    Eigen::VectorXd cell_volume = Eigen::VectorXd::Zero(cells.prod());
+    for (Eigen::Index k = 0; k < weights_.size(); ++k)
+        cell_volume[row_of_element_[static_cast<size_t>(k)]] += weights_[k];
+    for (Eigen::Index k = 0; k < weights_.size(); ++k)
+        weights_[k] /= cell_volume[row_of_element_[static_cast<size_t>(k)]];
     // One entry per (cell, coordinate): the elements of a cell share nodes, and
     // a repeated entry would multiply the pattern of JᵀJ (a row with k
     // entries gives k² products) by the square of the sharing.
@@ -79,16 +85,16 @@ WeakFiberInextensibility::WeakFiberInextensibility(const Mesh& mesh, std::vector
             jacobian_.add(row, col);
         entry_of_element_entry_.push_back(found->second);
     }
-    scratch_.resize(std::max<Eigen::Index>(element_jacobian.nonzeros(), volumes_.size()));
+    scratch_.resize(std::max<Eigen::Index>(element_jacobian.nonzeros(), weights_.size()));
 }
 
 void WeakFiberInextensibility::values(ConstVectorRef x, VectorRef c)
 {
-    auto per_element = scratch_.head(volumes_.size());
+    auto per_element = scratch_.head(weights_.size());
     per_element_->values(x, per_element);
     c.setZero();
-    for (Eigen::Index k = 0; k < volumes_.size(); ++k)
-        c[row_of_element_[static_cast<size_t>(k)]] += volumes_[k] * per_element[k];  // c_z = Σ V_e c_e
+    for (Eigen::Index k = 0; k < weights_.size(); ++k)
+        c[row_of_element_[static_cast<size_t>(k)]] += weights_[k] * per_element[k];  // c_z = Σ w_e c_e
 }
 
 void WeakFiberInextensibility::jacobian_values(ConstVectorRef x, VectorRef values)
@@ -97,19 +103,19 @@ void WeakFiberInextensibility::jacobian_values(ConstVectorRef x, VectorRef value
     auto per_element = scratch_.head(element_jacobian.nonzeros());
     per_element_->jacobian_values(x, per_element);
     values.setZero();
-    for (int entry = 0; entry < element_jacobian.nonzeros(); ++entry)  // ∂c_z/∂x = Σ_{e∈z} V_e ∂c_e/∂x
+    for (int entry = 0; entry < element_jacobian.nonzeros(); ++entry)  // ∂c_z/∂x = Σ_{e∈z} w_e ∂c_e/∂x
         values[entry_of_element_entry_[static_cast<size_t>(entry)]] +=
-            volumes_[element_jacobian.rows[entry]] * per_element[entry];
+            weights_[element_jacobian.rows[entry]] * per_element[entry];
 }
 
 void WeakFiberInextensibility::hessian_values(ConstVectorRef x, ConstVectorRef lambda, Projection projection,
                                               VectorRef values)
 {
-    // Σ_z λ_z Σ_{e∈z} V_e ∇²c_e = Σ_e (V_e λ_{z(e)}) ∇²c_e; V_e > 0, so the
+    // Σ_z λ_z Σ_{e∈z} w_e ∇²c_e = Σ_e (w_e λ_{z(e)}) ∇²c_e; w_e > 0, so the
     // clamp of each term is the clamp of λ_z.
-    auto weights = scratch_.head(volumes_.size());
-    for (Eigen::Index k = 0; k < volumes_.size(); ++k)
-        weights[k] = volumes_[k] * lambda[row_of_element_[static_cast<size_t>(k)]];
+    auto weights = scratch_.head(weights_.size());
+    for (Eigen::Index k = 0; k < weights_.size(); ++k)
+        weights[k] = weights_[k] * lambda[row_of_element_[static_cast<size_t>(k)]];
     per_element_->hessian_values(x, weights, projection, values);
 }
 

@@ -10,14 +10,17 @@ namespace sinew {
 /// multiplier per grid cell (P0, as seed 004 §4.2.2 does on the MPM grid
 /// with one λ_z per cell z):
 ///
-///     c_z(x) = Σ_{e ∈ z} V_e (a₀ᵀ C_e a₀ − 1),
+///     c_z(x) = Σ_{e ∈ z} V_e (a₀ᵀ C_e a₀ − 1) / Σ_{e ∈ z} V_e,
 ///
 /// e ∈ z when the element's rest centroid lies in cell z of a regular grid
 /// of `cells` over the bounding box of the listed elements' rest nodes; V_e
-/// the element's rest measure. Row z is cell z (x fastest), and every cell
+/// the element's rest measure. Each row is the volume-weighted mean of
+/// a₀ᵀCa₀ − 1 over its cell: dimensionless, so that a constraint tolerance
+/// reads the same on every mesh (as Σ V_e(…) alone, with units of volume,
+/// a violation of 1e-6 on a 1 mm³ cell was a mean stretch error of 100 %). Row z is cell z (x fastest), and every cell
 /// must hold an element. With enough elements per cell the rows are
 /// independent where the per-element form (FiberInextensibility) is
-/// rank-deficient. ∇²c_z = Σ V_e ∇²c_e is PSD;
+/// rank-deficient. ∇²c_z = Σ w_e ∇²c_e (w_e = V_e / Σ_{e∈z} V_e) is PSD;
 /// under Projection::clamp λ_z is replaced by max(λ_z, 0).
 class WeakFiberInextensibility final : public ConstraintSet {
 public:
@@ -47,7 +50,7 @@ public:
 
 private:
     std::unique_ptr<FiberInextensibility> per_element_;
-    Eigen::VectorXd volumes_;          ///< V_e of each listed element
+    Eigen::VectorXd weights_;          ///< w_e = V_e / V_z(e) of each listed element
     Eigen::VectorXi cells_;            ///< grid cells per dimension
     std::vector<int> row_of_element_;  ///< z(e), as a constraint row
     SparsityPattern jacobian_;         ///< one entry per (cell row, coordinate) the cell's elements touch

@@ -58,7 +58,7 @@ public:
     OuterLoop(Nlp& nlp, const SolverOptions& options, const OuterSettings& settings, std::string name)
         : nlp_(nlp), options_(options), settings_(settings), name_(std::move(name)), function_(nlp), bounds_(nlp),
           rows_(function_.constraint_residuals()), m_(nlp.num_constraints()), n_(nlp.num_variables()), c_(m_),
-          r_(m_), active_(m_), jacobian_(nlp.jacobian_pattern().nonzeros()), g_(n_), grad_phi_(n_)
+          r_(m_), active_(m_), jacobian_(nlp.jacobian_pattern().nonzeros()), g_(n_), grad_phi_(n_), v_(m_)
     {
         x_lower_.resize(n_);
         x_upper_.resize(n_);
@@ -81,6 +81,11 @@ private:
     /// that ∇φ (from measure_rows()) pushes outward, as a projected-gradient
     /// step would; whether any moved.
     bool place_held_variables(VectorXd& x);
+    /// |μᵀv| ≤ kkt_tol · max(1, |f(x)|), from measure_rows(): to first order
+    /// f(x*) − f(x) = μᵀ(c − P(c)) near a KKT point, so this bounds the
+    /// distance in energy to the constrained optimum that a feasibility test
+    /// alone leaves open (a violation of 1e-6 with large multipliers).
+    bool energy_gap_small(const VectorXd& x);
     /// z_L, z_U ≥ 0 at x from g = ∇f + Jᵀμ.
     void bound_multipliers(const VectorXd& x, const VectorXd& g);
     void absorb(const Result& inner, int outer);
@@ -95,7 +100,7 @@ private:
     ConstraintResiduals& rows_;
     const int m_, n_;
     VectorXd lambda_, multipliers_, z_lower_, z_upper_, x_lower_, x_upper_;
-    VectorXd c_, r_, active_, jacobian_, g_, grad_phi_;  ///< scratch
+    VectorXd c_, r_, active_, jacobian_, g_, grad_phi_, v_;  ///< scratch
     double violation_ = 0.0;
     Result total_;
     int history_rows_ = 0;
@@ -121,6 +126,14 @@ double OuterLoop::gradient_target(const VectorXd& x)
 {
     nlp_.gradient(x, g_);
     return options_.tolerance * std::max(1.0, g_.cwiseAbs().maxCoeff());
+}
+
+bool OuterLoop::energy_gap_small(const VectorXd& x)
+{
+    if (m_ == 0)
+        return true;
+    rows_.violations(c_, v_);
+    return std::abs(multipliers_.dot(v_)) <= options_.kkt_tolerance * std::max(1.0, std::abs(nlp_.objective(x)));
 }
 
 void OuterLoop::measure_rows(const VectorXd& x, double kappa)
@@ -247,13 +260,15 @@ Result OuterLoop::run()
         // The subproblem's target, set from ∇f at its start, must also hold
         // for ∇f at its end; otherwise the next subproblem tightens it.
         const bool stationary = target <= gradient_target(x);
-        if (measure <= options_.constraint_tolerance && inner.status == Status::converged && stationary)
+        if (measure <= options_.constraint_tolerance && inner.status == Status::converged && stationary &&
+            energy_gap_small(x))
             return finish(Status::converged, "violation within constr_tol at kappa = " + format_number(kappa), x);
         // A feasible penalty minimizer whose subproblem stalled at round-off
         // of ∇φ (κJᵀc̃ grows with κ): more stiffness cannot help. It ends
         // here; solve() then measures the KKT residual and keeps "converged"
         // only if that tolerance holds too.
-        if (!settings_.multipliers && violation <= options_.constraint_tolerance && inner.status == Status::stalled)
+        if (!settings_.multipliers && violation <= options_.constraint_tolerance && inner.status == Status::stalled &&
+            energy_gap_small(x))
             return finish(Status::converged,
                           "violation within constr_tol at kappa = " + format_number(kappa) +
                               "; the subproblem stalled at round-off: " + inner.message,
@@ -269,8 +284,13 @@ Result OuterLoop::run()
             // point ends here, and solve() keeps "converged" only if the KKT
             // residual holds too.
             if (measure <= options_.constraint_tolerance && inner.status == Status::converged)
-                return finish(Status::converged,
-                              "violation within constr_tol at the largest kappa = " + format_number(kappa), x);
+                return energy_gap_small(x)
+                           ? finish(Status::converged,
+                                    "violation within constr_tol at the largest kappa = " + format_number(kappa), x)
+                           : finish(Status::tolerance_not_met,
+                                    "violation within constr_tol at the largest kappa = " + format_number(kappa) +
+                                        ", but the energy gap |mu^T (c - P(c))| exceeds kkt_tol max(1, |f|)",
+                                    x);
             if (settings_.multipliers)
                 return finish(multiplier_method_status(violation, options_.constraint_tolerance),
                               multiplier_method_message(violation, measure, kappa), x);
