@@ -381,9 +381,13 @@ public:
     std::optional<std::string> refusal(const Nlp& nlp) const override
     {
         const NlpCapabilities kind = capabilities_of(nlp);
-        if (kind.has_equalities || kind.has_inequalities)
-            return "projected-newton takes unconstrained and bound-constrained problems only (this one has " + kind.describe() +
-                   "; eliminate Dirichlet conditions, or use kkt-newton, augmented-lagrangian or ipopt)";
+        if (kind.has_inequalities)
+            return "projected-newton takes unconstrained and bound-constrained problems only (this one has " +
+                   kind.describe() + "; use interior-point, penalty, augmented-lagrangian or ipopt)";
+        if (kind.has_equalities)
+            return "projected-newton takes unconstrained and bound-constrained problems only (this one has " +
+                   kind.describe() +
+                   "; eliminate Dirichlet conditions, or use kkt-newton, interior-point, augmented-lagrangian or ipopt)";
         return std::nullopt;
     }
 
