@@ -21,6 +21,9 @@ add_library(TetGen::tet UNKNOWN IMPORTED)
 set_target_properties(TetGen::tet PROPERTIES IMPORTED_LOCATION "${TETGEN_LIBRARY}"
                       INTERFACE_INCLUDE_DIRECTORIES "${TETGEN_INCLUDE_DIR}")
 find_package(OpenMP REQUIRED)
+# libcgal-dev: CGAL 5.5, header-only (with GMP and MPFR); collision bodies
+# (bodies/: AABB tree closest points, Side_of_triangle_mesh).
+find_package(CGAL 5.5 REQUIRED)
 # nlohmann-json3-dev: header-only; scene files and the CLI's JSON.
 find_package(nlohmann_json 3 REQUIRED)
 

@@ -1,0 +1,161 @@
+// Collision bodies bounded by closed triangle surfaces (issue 32, contact):
+// the signed distance, its gradient and Hessian against the closed forms on
+// a cube (face, edge and vertex regions, inside and out) and through the
+// shared derivative check, and one-line errors for surfaces that cannot
+// bound a volume.
+#include "sinew/bodies/surface_body.hpp"
+#include "sinew/core/input_error.hpp"
+#include "sinew/mesh/mesh.hpp"
+#include "sinew/problems/derivative_check.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+using namespace sinew;
+
+namespace {
+
+/// The unit cube [0, 1]³ as 12 triangles, outward (or inward) facing.
+Mesh cube_surface(bool outward = true)
+{
+    Mesh mesh;
+    mesh.kind = ElementKind::triangle_3d;
+    mesh.nodes.resize(3, 8);
+    for (int i = 0; i < 8; ++i)
+        mesh.nodes.col(i) << (i & 1), ((i >> 1) & 1), ((i >> 2) & 1);
+    const int faces[12][3] = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                              {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+    mesh.elements.resize(3, 12);
+    for (int t = 0; t < 12; ++t)
+        mesh.elements.col(t) << faces[t][0], (outward ? faces[t][1] : faces[t][2]), (outward ? faces[t][2] : faces[t][1]);
+    return mesh;
+}
+
+/// φ of a body as an unconstrained problem of three variables, so that the
+/// shared derivative check compares ∇φ and ∇²φ with differences of φ.
+class DistanceProblem final : public Nlp {
+public:
+    DistanceProblem(const SurfaceBody& body, Eigen::Vector3d start) : body_(body), start_(std::move(start))
+    {
+        for (int row = 0; row < 3; ++row)
+            for (int col = 0; col <= row; ++col)
+                hessian_.add(row, col);
+    }
+    std::string name() const override { return "signed-distance"; }
+    int num_variables() const override { return 3; }
+    Vector starting_point() const override { return start_; }
+    double objective(ConstVectorRef x) override { return body_.query(x).distance; }
+    void gradient(ConstVectorRef x, VectorRef g) override { g = body_.query(x).gradient; }
+    const SparsityPattern& hessian_pattern() const override { return hessian_; }
+
+protected:
+    void hessian_values(ConstVectorRef x, double sigma, ConstVectorRef, VectorRef values) override
+    {
+        const Eigen::Matrix3d h = sigma * body_.query(x).hessian();
+        int k = 0;
+        for (int row = 0; row < 3; ++row)
+            for (int col = 0; col <= row; ++col)
+                values[k++] = h(row, col);
+    }
+
+private:
+    const SurfaceBody& body_;
+    Vector start_;
+    SparsityPattern hessian_;
+};
+
+} // namespace
+
+TEST_CASE("a cube body gives the signed distance, closest point and feature of faces, edges and vertices")
+{
+    const SurfaceBody body(cube_surface(), "cube");
+    SECTION("inside, nearest a face")
+    {
+        const SurfaceDistance d = body.query(Eigen::Vector3d(0.5, 0.5, 0.3));
+        CHECK(d.distance == Approx(-0.3));
+        CHECK(d.feature == SurfaceFeature::face);
+        CHECK((d.gradient - Eigen::Vector3d(0, 0, -1)).norm() < 1e-12);  // φ grows towards the face z = 0
+        CHECK(d.hessian().norm() == 0.0);
+    }
+    SECTION("outside a face, an edge and a vertex")
+    {
+        const SurfaceDistance face = body.query(Eigen::Vector3d(2.0, 0.5, 0.5));
+        CHECK(face.distance == Approx(1.0));
+        CHECK(face.feature == SurfaceFeature::face);
+        const SurfaceDistance edge = body.query(Eigen::Vector3d(1.5, 1.5, 0.5));
+        CHECK(edge.distance == Approx(std::sqrt(0.5)));
+        CHECK(edge.feature == SurfaceFeature::edge);
+        CHECK(std::abs(edge.edge_direction.z()) == Approx(1.0));
+        const SurfaceDistance vertex = body.query(Eigen::Vector3d(2.0, 2.0, 2.0));
+        CHECK(vertex.distance == Approx(std::sqrt(3.0)));
+        CHECK(vertex.feature == SurfaceFeature::vertex);
+        CHECK((vertex.closest - Eigen::Vector3d(1, 1, 1)).norm() < 1e-12);
+        CHECK((vertex.gradient - Eigen::Vector3d::Constant(1.0 / std::sqrt(3.0))).norm() < 1e-12);
+    }
+    SECTION("an inward-facing surface is turned outward on load")
+    {
+        const SurfaceBody inward(cube_surface(false), "inward cube");
+        CHECK(inward.query(Eigen::Vector3d(0.5, 0.5, 0.5)).distance == Approx(-0.5));
+        CHECK(inward.query(Eigen::Vector3d(0.5, 0.5, 1.5)).distance == Approx(0.5));
+    }
+}
+
+TEST_CASE("the signed distance to a body passes the shared derivative check near faces, edges and vertices")
+{
+    const SurfaceBody body(cube_surface(), "cube");
+    std::mt19937 rng(61);
+    std::uniform_real_distribution<double> jitter(-0.05, 0.05);
+    // Centres of the regimes: inside near a face, outside a face, an edge and a
+    // vertex, deep inside, and just outside a face (1e-3 away).
+    const Eigen::Vector3d centres[] = {{0.5, 0.5, 0.2}, {0.5, 0.5, 1.4}, {1.3, 0.5, 1.3}, {1.4, -0.3, 1.2},
+                                       {0.45, 0.5, 0.55}, {0.5, 0.4, 1.001}};
+    for (const Eigen::Vector3d& centre : centres)
+        for (int trial = 0; trial < 3; ++trial) {
+            Eigen::Vector3d x = centre;
+            for (int k = 0; k < 3; ++k)
+                x[k] += (centre == centres[5] ? 0.01 : 1.0) * jitter(rng);
+            DistanceProblem problem(body, x);
+            const DerivativeCheckReport report = check_derivatives(problem, x);
+            CAPTURE(x.transpose(), report.to_text());
+            CHECK(report.passed(1e-5));
+        }
+}
+
+TEST_CASE("a surface that cannot bound a volume is refused with one line naming the body and the defect")
+{
+    using Catch::Matchers::Contains;
+    SECTION("open: one triangle missing")
+    {
+        Mesh open = cube_surface();
+        open.elements.conservativeResize(3, 11);
+        CHECK_THROWS_WITH(SurfaceBody(open, "lid-less"), Contains("lid-less") && Contains("open"));
+    }
+    SECTION("self-intersecting: two overlapping cubes in one surface")
+    {
+        Mesh two = cube_surface();
+        Mesh shifted = cube_surface();
+        shifted.nodes.array() += 0.5;
+        Mesh joined;
+        joined.kind = ElementKind::triangle_3d;
+        joined.nodes.resize(3, 16);
+        joined.nodes << two.nodes, shifted.nodes;
+        joined.elements.resize(3, 24);
+        joined.elements << two.elements, (shifted.elements.array() + 8).matrix();
+        CHECK_THROWS_WITH(SurfaceBody(joined, "overlap"), Contains("overlap") && Contains("intersects itself"));
+    }
+    SECTION("too few triangles, a degenerate triangle, a tet mesh")
+    {
+        Mesh few = cube_surface();
+        few.elements.conservativeResize(3, 3);
+        CHECK_THROWS_AS(SurfaceBody(few, "few"), InputError);
+        Mesh flat = cube_surface();
+        flat.elements.col(0) << 0, 1, 1;
+        CHECK_THROWS_AS(SurfaceBody(flat, "flat"), InputError);
+        Mesh tets = cube_surface();
+        tets.kind = ElementKind::tetrahedron;
+        CHECK_THROWS_WITH(SurfaceBody(tets, "tets"), Contains("triangle"));
+    }
+}
