@@ -6,14 +6,12 @@
 namespace sinew {
 namespace {
 
-/// Ipopt's bound_relax_factor.
-constexpr double kRelax = 1e-8;
 /// κ_Σ of Wächter & Biegler 2006, eq. 16.
 constexpr double kSigmaSafeguard = 1e10;
 
 } // namespace
 
-BarrierBounds::BarrierBounds(const Nlp& nlp)
+BarrierBounds::BarrierBounds(const Nlp& nlp, double relax)
 {
     const int n = nlp.num_variables();
     original_lower_.resize(n);
@@ -26,11 +24,11 @@ BarrierBounds::BarrierBounds(const Nlp& nlp)
     for (int i = 0; i < n; ++i) {
         if (is_finite_bound(lower_[i])) {
             has_lower_[i] = 1.0;
-            lower_[i] -= kRelax * std::max(1.0, std::abs(lower_[i]));
+            lower_[i] -= relax * std::max(1.0, std::abs(lower_[i]));
         }
         if (is_finite_bound(upper_[i])) {
             has_upper_[i] = 1.0;
-            upper_[i] += kRelax * std::max(1.0, std::abs(upper_[i]));
+            upper_[i] += relax * std::max(1.0, std::abs(upper_[i]));
         }
     }
 }

@@ -10,13 +10,14 @@ namespace sinew {
 ///     φ_μ(w) = f(w) − μ Σ ln(w − w_L) − μ Σ ln(w_U − w)
 ///
 /// over the finite bounds only. Each bound is relaxed outward by
-/// 1e-8·max(1, |bound|) (Ipopt's bound_relax_factor) so that a variable with
-/// w_L = w_U still has an interior; original() projects onto the unrelaxed box.
+/// relax·max(1, |bound|) (Ipopt's bound_relax_factor, 1e-8 by default) so
+/// that a variable with w_L = w_U still has an interior; original() projects
+/// onto the unrelaxed box.
 class BarrierBounds {
 public:
     using Vector = Eigen::VectorXd;
 
-    explicit BarrierBounds(const Nlp& nlp);
+    BarrierBounds(const Nlp& nlp, double relax);
 
     int size() const { return static_cast<int>(lower_.size()); }
     bool has_lower(int i) const { return has_lower_[i] != 0.0; }

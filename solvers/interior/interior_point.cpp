@@ -25,6 +25,7 @@ struct InteriorPointSettings {
     double mu_init = 0.1;
     double bound_push = 1e-2;
     double bound_frac = 1e-2;
+    double bound_relax_factor = 1e-8;
     bool second_order_correction = true;
 };
 
@@ -41,6 +42,10 @@ std::vector<OptionDeclaration> interior_point_options()
                         0.0, 0.5, true, true),
             real_option("bound_frac", "1e-2", "... and at least this fraction of the gap between two bounds",
                         0.0, 0.5, true),
+            real_option("bound_relax_factor", "1e-8",
+                        "bounds and inequalities are relaxed by this (relative) so that the iterates have an "
+                        "interior; 0 keeps them exact (then no x_L = x_U or equal inequality bounds)",
+                        0.0, 1e-2),
             choice_option("second_order_correction", "yes",
                           "try second-order corrections when the first trial step is rejected", {"yes", "no"})};
 }
@@ -55,6 +60,7 @@ InteriorPointSettings read_settings(const SolverOptions& options)
     settings.mu_init = values.real("mu_init");
     settings.bound_push = values.real("bound_push");
     settings.bound_frac = values.real("bound_frac");
+    settings.bound_relax_factor = values.real("bound_relax_factor");
     settings.second_order_correction = values.text("second_order_correction") == "yes";
     return settings;
 }
@@ -70,7 +76,7 @@ struct Errors {
 class InteriorPointRun {
 public:
     InteriorPointRun(Nlp& problem, const SolverOptions& options, const InteriorPointSettings& settings)
-        : options_(options), settings_(settings), nlp_(problem), bounds_(nlp_), n_(problem.num_variables()),
+        : options_(options), settings_(settings), nlp_(problem), bounds_(nlp_, settings.bound_relax_factor), n_(problem.num_variables()),
           N_(nlp_.num_variables()), m_(nlp_.num_constraints()),
           kkt_(nlp_.hessian_pattern(), nlp_.jacobian_pattern(), N_, m_),
           factorization_(make_linear_solver(settings.linear_solver)),

@@ -258,7 +258,7 @@ TEST_CASE("the filter rejects what an entry dominates and keeps only undominated
 TEST_CASE("the fraction to the boundary keeps iterates strictly inside the relaxed bounds")
 {
     WaechterBieglerExample nlp;
-    const BarrierBounds bounds(nlp);
+    const BarrierBounds bounds(nlp, 1e-8);
     Eigen::VectorXd w(3), dw(3);
     w << 0.0, 1.0, 2.0;
     dw << -100.0, -10.0, -4.0;
