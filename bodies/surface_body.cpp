@@ -167,6 +167,16 @@ SurfaceDistance SurfaceBody::query(const Eigen::Vector3d& x) const
     return d;
 }
 
+BodyDistance SurfaceBody::distance(const Eigen::Vector3d& x) const
+{
+    const SurfaceDistance d = query(x);
+    BodyDistance out;
+    out.distance = d.distance;
+    out.gradient = d.gradient;
+    out.hessian = d.hessian();
+    return out;
+}
+
 Eigen::Matrix3d SurfaceDistance::hessian() const
 {
     const double rho = std::abs(distance);

@@ -1,4 +1,6 @@
 #pragma once
+#include "sinew/bodies/collision_body.hpp"
+
 #include <Eigen/Core>
 
 #include <memory>
@@ -32,23 +34,27 @@ struct SurfaceDistance {
 /// Side_of_triangle_mesh (inside or out) — never a hand-written BVH. The
 /// surface must be a closed, oriented 2-manifold without self-intersections;
 /// triangles may face inward or outward (orientation is fixed on load).
-class SurfaceBody {
+class SurfaceBody final : public CollisionBody {
 public:
     /// `surface` a 3D triangle mesh (Mesh of kind triangle_3d). InputError,
     /// one line naming `name` and the defect: fewer than 4 triangles, a
     /// degenerate triangle, a non-manifold edge or vertex, an open boundary
     /// (with the number of border edges), a self-intersection.
     SurfaceBody(const Mesh& surface, const std::string& name);
-    ~SurfaceBody();
+    ~SurfaceBody() override;
     SurfaceBody(SurfaceBody&&) noexcept;
     SurfaceBody& operator=(SurfaceBody&&) noexcept;
 
     /// read_obj(path), then as above; errors name the file.
     static SurfaceBody from_obj(const std::string& path);
 
-    const std::string& name() const { return name_; }
+    std::string name() const override { return name_; }
+    std::string kind() const override { return "surface"; }
+    int dimension() const override { return 3; }
     /// φ and its derivative data at x (body frame).
     SurfaceDistance query(const Eigen::Vector3d& x) const;
+    /// query(x) as φ, ∇φ, ∇²φ.
+    BodyDistance distance(const Eigen::Vector3d& x) const override;
     /// The axis-aligned bounds of the surface, min and max corners.
     Eigen::Vector3d lower() const { return lower_; }
     Eigen::Vector3d upper() const { return upper_; }

@@ -25,6 +25,14 @@ struct OutputArrays {
             found = cells.emplace(name, Eigen::MatrixXd::Constant(components, num_cells, fill)).first;
         return found->second;
     }
+    /// The point array `name`, likewise.
+    Eigen::MatrixXd& point_array(const std::string& name, int components, double fill)
+    {
+        auto found = points.find(name);
+        if (found == points.end())
+            found = points.emplace(name, Eigen::MatrixXd::Constant(components, num_points, fill)).first;
+        return found->second;
+    }
 };
 
 } // namespace sinew

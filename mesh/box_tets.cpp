@@ -1,5 +1,6 @@
 #include "sinew/mesh/box_tets.hpp"
 
+#include "sinew/core/input_error.hpp"
 #include "sinew/mesh/grid_extent.hpp"
 
 #include <array>
@@ -10,6 +11,27 @@ namespace sinew {
 Mesh box_tets(const Eigen::Vector3d& lower, const Eigen::Vector3d& upper, int nx, int ny, int nz)
 {
     check_grid_extent("box_tets", lower, upper, Eigen::Vector3i(nx, ny, nz));
+    const Eigen::Vector3i cells(nx, ny, nz);
+    std::array<std::vector<double>, 3> axes;
+    for (int a = 0; a < 3; ++a)
+        for (int i = 0; i <= cells[a]; ++i) {
+            const double t = double(i) / cells[a];
+            axes[a].push_back((1.0 - t) * lower[a] + t * upper[a]);  // exact at both ends
+        }
+    return box_tets(axes);
+}
+
+Mesh box_tets(const std::array<std::vector<double>, 3>& axes)
+{
+    for (int a = 0; a < 3; ++a) {
+        if (axes[a].size() < 2)
+            throw InputError("box_tets: axis " + std::to_string(a) + " has fewer than 2 nodes");
+        for (size_t i = 1; i < axes[a].size(); ++i)
+            if (!(axes[a][i] > axes[a][i - 1]))
+                throw InputError("box_tets: the nodes of axis " + std::to_string(a) + " do not increase");
+    }
+    const int nx = static_cast<int>(axes[0].size()) - 1, ny = static_cast<int>(axes[1].size()) - 1,
+              nz = static_cast<int>(axes[2].size()) - 1;
     const auto node_index = [&](int i, int j, int k) { return i + (nx + 1) * (j + (ny + 1) * k); };
 
     Mesh mesh;
@@ -17,12 +39,8 @@ Mesh box_tets(const Eigen::Vector3d& lower, const Eigen::Vector3d& upper, int nx
     mesh.nodes.resize(3, (nx + 1) * (ny + 1) * (nz + 1));
     for (int k = 0; k <= nz; ++k)
         for (int j = 0; j <= ny; ++j)
-            for (int i = 0; i <= nx; ++i) {
-                const Eigen::Vector3d t(double(i) / nx, double(j) / ny, double(k) / nz);
-                // (1 − t)·lower + t·upper is exact at both ends of each axis.
-                mesh.nodes.col(node_index(i, j, k)) =
-                    (Eigen::Vector3d::Ones() - t).cwiseProduct(lower) + t.cwiseProduct(upper);
-            }
+            for (int i = 0; i <= nx; ++i)
+                mesh.nodes.col(node_index(i, j, k)) << axes[0][i], axes[1][j], axes[2][k];
 
     // Kuhn split of the unit cell: for each permutation σ of the axes, the
     // tet walks from corner (0,0,0) to (1,1,1) one axis at a time,

@@ -3,6 +3,9 @@
 
 #include <Eigen/Core>
 
+#include <array>
+#include <vector>
+
 namespace sinew {
 
 /// A tet mesh of the box [lower, upper] with nx × ny × nz cells, each cell
@@ -16,5 +19,12 @@ namespace sinew {
 /// (grid_extent.hpp): a count below 1, lower < upper false, a bound beyond
 /// ±kMaxCoordinate, or cells too thin to resolve.
 Mesh box_tets(const Eigen::Vector3d& lower, const Eigen::Vector3d& upper, int nx, int ny, int nz);
+
+/// The same split of the box whose cells lie between the given node
+/// coordinates of each axis (graded_axis.hpp: cells that grow away from a
+/// contact zone); tets are positively oriented, their volumes those of
+/// their cells / 6. InputError for an axis of fewer than 2 nodes or nodes
+/// that do not strictly increase.
+Mesh box_tets(const std::array<std::vector<double>, 3>& axes);
 
 } // namespace sinew

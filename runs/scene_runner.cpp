@@ -1,4 +1,5 @@
 #include "sinew/runs/scene_runner.hpp"
+#include "sinew/runs/refreshed_solve.hpp"
 
 #include "sinew/runs/output_file.hpp"
 #include "sinew/runs/result_json.hpp"
@@ -79,7 +80,7 @@ SceneRunOutcome run_scene(Scene& scene, const SceneRunSettings& settings)
 {
     if (scene.dynamics) {
         const TimeSteppingOutcome stepped = run_time_stepping(scene, settings);
-        return {stepped.converged, stepped.run, stepped.total_iterations, stepped.total_time_s};
+        return {stepped.converged, stepped.run, stepped.total_iterations, stepped.total_time_s, {}};
     }
     // Every input is checked before the output folder is made.
     check_solve(*scene.problem, settings.solver, settings.options);
@@ -109,7 +110,7 @@ SceneRunOutcome run_scene(Scene& scene, const SceneRunSettings& settings)
     for (int k = 1; k <= n; ++k) {
         const double s = static_cast<double>(k) / n;
         scene.apply_load_factor(s);
-        result = solve(problem, settings.solver, settings.options);
+        result = solve_with_refreshed_rows(problem, settings.solver, settings.options);
         outcome.total_time_s += result.time_s;
         outcome.total_iterations += result.iterations;
         steps.push_back(step_summary(k, s, result));
@@ -130,9 +131,13 @@ SceneRunOutcome run_scene(Scene& scene, const SceneRunSettings& settings)
         problem.set_starting_configuration(configuration);
     }
     outcome.converged = result.status == Status::converged && static_cast<int>(steps.size()) == n;
+    const Eigen::VectorXd solution = problem.full_configuration(result.x);
+    outcome.contact = contact_summary(scene_output_arrays(scene, solution, result.constraint_multipliers),
+                                      Eigen::Map<const Eigen::MatrixXd>(solution.data(), scene.mesh.nodes.rows(),
+                                                                        scene.mesh.num_nodes()));
     if (!writes)
         return outcome;
-    const nlohmann::json out = {{"scene", scene.name},
+    nlohmann::json out = {{"scene", scene.name},
                                 {"description", scene.description},
                                 {"solver", settings.solver},
                                 {"load_steps", n},
@@ -143,6 +148,8 @@ SceneRunOutcome run_scene(Scene& scene, const SceneRunSettings& settings)
                                 {"steps", steps},
                                 {"vtu", vtu_files},
                                 {"result", to_json(result)}};
+    if (outcome.contact.present)
+        out["contact"] = to_json(outcome.contact);
     write_text_file(folder + "result.json", out.dump(2) + "\n");
     return outcome;
 }

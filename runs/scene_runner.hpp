@@ -1,5 +1,6 @@
 #pragma once
 #include "sinew/problems/quasistatic/scene.hpp"
+#include "sinew/runs/contact_summary.hpp"
 #include "sinew/runs/scene_run_settings.hpp"
 #include "sinew/solvers/result.hpp"
 #include "sinew/solvers/solver_options.hpp"
@@ -65,6 +66,9 @@ struct SceneRunOutcome {
     Result last;             ///< the last step's result
     int total_iterations = 0;
     double total_time_s = 0.0;
+    /// Contact with the scene's bodies at the last solution (present only
+    /// when the scene has bodies); result.json's "contact".
+    ContactSummary contact;
 };
 SceneRunOutcome run_scene(Scene& scene, const SceneRunSettings& settings);
 

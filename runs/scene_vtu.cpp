@@ -11,8 +11,7 @@ Eigen::MatrixXd by_node(const Eigen::VectorXd& v, int dimension)
 
 } // namespace
 
-void write_scene_vtu(const std::string& path, Scene& scene, const Eigen::VectorXd& configuration,
-                     const Eigen::VectorXd& multipliers, VtuEncoding encoding, const VtuArrays& extra_point_data)
+OutputArrays scene_output_arrays(Scene& scene, const Eigen::VectorXd& configuration, const Eigen::VectorXd& multipliers)
 {
     const Mesh& mesh = scene.mesh;
     const int dimension = static_cast<int>(mesh.nodes.rows());
@@ -27,8 +26,6 @@ void write_scene_vtu(const std::string& path, Scene& scene, const Eigen::VectorX
     arrays.points["displacement"] = positions - mesh.nodes;
     arrays.points["force"] = -by_node(gradient, dimension);  // net force −∂E/∂x
     arrays.points["fixed"] = scene.fixed_flags().transpose();
-    for (const auto& [name, values] : extra_point_data)
-        arrays.points[name] = values;
     Eigen::MatrixXd group(1, mesh.num_elements());
     for (int e = 0; e < mesh.num_elements(); ++e)
         group(0, e) = mesh.element_groups[static_cast<size_t>(e)];
@@ -44,7 +41,17 @@ void write_scene_vtu(const std::string& path, Scene& scene, const Eigen::VectorX
                                             : Eigen::VectorXd();
         set->add_output_data(configuration, rows, arrays);
     }
-    write_vtu(path, mesh, positions, arrays.points, arrays.cells, encoding);
+    return arrays;
+}
+
+void write_scene_vtu(const std::string& path, Scene& scene, const Eigen::VectorXd& configuration,
+                     const Eigen::VectorXd& multipliers, VtuEncoding encoding, const VtuArrays& extra_point_data)
+{
+    OutputArrays arrays = scene_output_arrays(scene, configuration, multipliers);
+    for (const auto& [name, values] : extra_point_data)
+        arrays.points[name] = values;
+    const int dimension = static_cast<int>(scene.mesh.nodes.rows());
+    write_vtu(path, scene.mesh, by_node(configuration, dimension), arrays.points, arrays.cells, encoding);
 }
 
 } // namespace sinew

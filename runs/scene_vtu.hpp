@@ -1,4 +1,5 @@
 #pragma once
+#include "sinew/energies/output_arrays.hpp"
 #include "sinew/mesh/vtu_writer.hpp"
 #include "sinew/problems/quasistatic/scene.hpp"
 
@@ -7,6 +8,11 @@
 #include <string>
 
 namespace sinew {
+
+/// The point and cell data of the scene at `configuration`: displacement,
+/// force, fixed and group, and each potential's and constraint set's own
+/// (add_output_data; the sets with their rows of `multipliers`).
+OutputArrays scene_output_arrays(Scene& scene, const Eigen::VectorXd& configuration, const Eigen::VectorXd& multipliers);
 
 /// Writes the scene's mesh at `configuration` (node-major, all coordinates)
 /// as a VTU file with the point and cell data of docs/scenes.md, "Output":

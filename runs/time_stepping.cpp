@@ -1,4 +1,5 @@
 #include "sinew/runs/time_stepping.hpp"
+#include "sinew/runs/refreshed_solve.hpp"
 
 #include "sinew/runs/output_file.hpp"
 #include "sinew/runs/result_json.hpp"
@@ -383,7 +384,7 @@ TimeSteppingOutcome run_time_stepping(Scene& scene, const SceneRunSettings& sett
         set_step_terms(scene, *integrator, d);
         const SolverOptions& options = step_options.for_step(scene, *integrator, initial.x);
         problem.set_starting_configuration(integrator->explicit_guess());
-        outcome.last = solve(problem, settings.solver, options);
+        outcome.last = solve_with_refreshed_rows(problem, settings.solver, options);
         const Result& result = outcome.last;
         const Eigen::VectorXd x_n = outcome.state.x;
         integrator->advance(problem.full_configuration(result.x));

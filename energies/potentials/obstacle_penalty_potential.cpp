@@ -3,6 +3,8 @@
 #include "sinew/core/input_error.hpp"
 #include "sinew/energies/potentials/hessian_pattern.hpp"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -12,64 +14,7 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-/// Where a node stands against the obstacle: depth δ = max(0, −φ), the unit
-/// ∇φ, and the curvature κ with ∇²φ = κ (I − ∇φ∇φᵀ) (0 for a plane, 1/ρ for
-/// a sphere).
-template <int Dim>
-struct Contact {
-    double signed_distance = 0.0;
-    double depth = 0.0;
-    Eigen::Matrix<double, Dim, 1> direction = Eigen::Matrix<double, Dim, 1>::Zero();
-    double curvature = 0.0;
-};
-
-template <int Dim>
-Contact<Dim> contact(const AnalyticObstacle& obstacle, const Eigen::Matrix<double, Dim, 1>& x)
-{
-    Contact<Dim> c;
-    if (const auto* plane = std::get_if<PlaneObstacle>(&obstacle)) {
-        c.direction = plane->normal;
-        c.signed_distance = c.direction.dot(x) - plane->offset;
-    } else {
-        const auto& sphere = std::get<SphereObstacle>(obstacle);
-        const Eigen::Matrix<double, Dim, 1> v = x - Eigen::Matrix<double, Dim, 1>(sphere.center);
-        const double rho = v.norm();
-        c.signed_distance = rho - sphere.radius;
-        if (rho > 0.0) {
-            c.direction = v / rho;
-            c.curvature = 1.0 / rho;
-        }
-    }
-    c.depth = std::max(0.0, -c.signed_distance);
-    return c;
-}
-
 std::string node_label(int node) { return "obstacle penalty: node " + std::to_string(node); }
-
-AnalyticObstacle checked_obstacle(AnalyticObstacle obstacle, int dimension)
-{
-    if (auto* plane = std::get_if<PlaneObstacle>(&obstacle)) {
-        if (plane->normal.size() != dimension)
-            throw InputError("plane obstacle: normal has " + std::to_string(plane->normal.size()) +
-                             " components, expected " + std::to_string(dimension));
-        const double length = plane->normal.norm();
-        if (!std::isfinite(plane->offset) || !std::isfinite(length) || !(length > 0.0))
-            throw InputError("plane obstacle: normal must be nonzero and finite, offset finite");
-        plane->normal /= length;
-        plane->offset /= length;
-    } else {
-        auto& sphere = std::get<SphereObstacle>(obstacle);
-        if (sphere.center.size() != dimension)
-            throw InputError("sphere obstacle: center has " + std::to_string(sphere.center.size()) +
-                             " components, expected " + std::to_string(dimension));
-        if (!sphere.center.allFinite())
-            throw InputError("sphere obstacle: center is not finite");
-        if (!(std::isfinite(sphere.radius) && sphere.radius > 0.0))
-            throw InputError("sphere obstacle: radius " + std::to_string(sphere.radius) +
-                             " must be finite and > 0");
-    }
-    return obstacle;
-}
 
 Stencils node_stencils(int num_nodes, const std::vector<int>& nodes)
 {
@@ -93,11 +38,41 @@ Stencils node_stencils(int num_nodes, const std::vector<int>& nodes)
     return listed;
 }
 
+/// The lower triangle of the symmetric `dimension` × `dimension` block of H,
+/// with its negative eigenvalues clamped when `clamp`.
+void add_block(const Eigen::Matrix3d& H, int dimension, bool clamp, const int* slots, double* values)
+{
+    if (dimension == 3) {
+        Eigen::Matrix3d block = H;
+        if (clamp) {
+            const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(block);
+            block = eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).asDiagonal() *
+                    eigen.eigenvectors().transpose();
+        }
+        add_lower_triangle(block, slots, values);
+    } else {
+        Eigen::Matrix2d block = H.topLeftCorner<2, 2>();
+        if (clamp) {
+            const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(block);
+            block = eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).asDiagonal() *
+                    eigen.eigenvectors().transpose();
+        }
+        add_lower_triangle(block, slots, values);
+    }
+}
+
 } // namespace
 
-ObstaclePenaltyPotential::ObstaclePenaltyPotential(int dimension, int num_nodes, AnalyticObstacle obstacle,
-                                                   double stiffness, std::vector<int> nodes)
-    : dimension_(dimension), num_nodes_(num_nodes), stiffness_(stiffness)
+std::string to_string(ContactCurvature curvature)
+{
+    return curvature == ContactCurvature::gauss_newton ? "gauss-newton" : "projected";
+}
+
+ObstaclePenaltyPotential::ObstaclePenaltyPotential(int dimension, int num_nodes, std::shared_ptr<const PlacedBody> body,
+                                                   double stiffness, std::vector<int> nodes,
+                                                   ContactCurvature curvature)
+    : dimension_(dimension), num_nodes_(num_nodes), body_(std::move(body)), stiffness_(stiffness),
+      curvature_(curvature)
 {
     if (dimension != 2 && dimension != 3)
         throw InputError("obstacle penalty: dimension " + std::to_string(dimension) + " is not 2 or 3");
@@ -105,69 +80,101 @@ ObstaclePenaltyPotential::ObstaclePenaltyPotential(int dimension, int num_nodes,
         throw InputError("obstacle penalty: node count " + std::to_string(num_nodes) + " is not valid");
     if (!(std::isfinite(stiffness) && stiffness > 0.0))
         throw InputError("obstacle penalty: stiffness " + std::to_string(stiffness) + " must be finite and > 0");
-    obstacle_ = checked_obstacle(std::move(obstacle), dimension);
+    if (!body_)
+        throw InputError("obstacle penalty: no body");
+    if (body_->dimension() != dimension)
+        throw InputError("obstacle penalty: body '" + body_->name() + "' is " + std::to_string(body_->dimension()) +
+                         "D, the scene " + std::to_string(dimension) + "D");
     nodes_ = node_stencils(num_nodes, nodes);
+}
+
+ObstaclePenaltyPotential::ObstaclePenaltyPotential(int dimension, int num_nodes, const AnalyticObstacle& obstacle,
+                                                   double stiffness, std::vector<int> nodes)
+    : ObstaclePenaltyPotential(dimension, num_nodes,
+                               std::make_shared<const PlacedBody>(analytic_body(obstacle, dimension)), stiffness,
+                               std::move(nodes))
+{
+}
+
+BodyDistance ObstaclePenaltyPotential::at_node(ConstVectorRef x, int node) const
+{
+    Eigen::Vector3d p = Eigen::Vector3d::Zero();
+    p.head(dimension_) = x.segment(dimension_ * node, dimension_);
+    return body_->distance(p);
 }
 
 double ObstaclePenaltyPotential::value(ConstVectorRef x)
 {
     double sum = 0.0;
     for (int k = 0; k < nodes_.cols(); ++k) {
-        const int node = nodes_(0, k);
-        const double phi = dimension_ == 3 ? contact<3>(obstacle_, x.segment<3>(3 * node)).signed_distance
-                                           : contact<2>(obstacle_, x.segment<2>(2 * node)).signed_distance;
+        const double phi = at_node(x, nodes_(0, k)).distance;
         if (!std::isfinite(phi))
             return kInfinity;
-        const double depth = std::max(0.0, -phi);
-        sum += 0.5 * stiffness_ * depth * depth;
+        const double depth = std::max(0.0, -phi);  // δ
+        sum += 0.5 * stiffness_ * depth * depth;   // ε/2 δ²
     }
     return sum;
 }
 
-template <int Dim>
-void ObstaclePenaltyPotential::add_gradient_in(ConstVectorRef x, VectorRef gradient) const
+void ObstaclePenaltyPotential::add_gradient(ConstVectorRef x, VectorRef gradient)
 {
     for (int k = 0; k < nodes_.cols(); ++k) {
         const int node = nodes_(0, k);
-        const Contact<Dim> c = contact<Dim>(obstacle_, x.segment<Dim>(Dim * node));
-        if (c.depth > 0.0)
-            gradient.segment<Dim>(Dim * node) -= stiffness_ * c.depth * c.direction;
-    }
-}
-
-void ObstaclePenaltyPotential::add_gradient(ConstVectorRef x, VectorRef gradient)
-{
-    if (dimension_ == 3)
-        add_gradient_in<3>(x, gradient);
-    else
-        add_gradient_in<2>(x, gradient);
-}
-
-template <int Dim>
-void ObstaclePenaltyPotential::add_hessian_in(ConstVectorRef x, Projection projection, const StencilSlots& slots,
-                                              VectorRef values) const
-{
-    using Matrix = Eigen::Matrix<double, Dim, Dim>;
-    for (int k = 0; k < nodes_.cols(); ++k) {
-        const Contact<Dim> c = contact<Dim>(obstacle_, x.segment<Dim>(Dim * nodes_(0, k)));
-        if (!(c.depth > 0.0))
-            continue;
-        const Matrix normal_part = c.direction * c.direction.transpose();
-        Matrix H = stiffness_ * normal_part;
-        // −ε δ ∇²φ = −ε δ κ (I − ∇φ∇φᵀ): negative semidefinite, dropped by the projection.
-        if (projection == Projection::none)
-            H -= stiffness_ * c.depth * c.curvature * (Matrix::Identity() - normal_part);
-        add_lower_triangle(H, &slots(0, k), values.data());
+        const BodyDistance d = at_node(x, node);
+        if (d.distance < 0.0)  // −ε δ ∇φ
+            gradient.segment(dimension_ * node, dimension_) += stiffness_ * d.distance * d.gradient.head(dimension_);
     }
 }
 
 void ObstaclePenaltyPotential::add_hessian(ConstVectorRef x, Projection projection, const StencilSlots& slots,
                                            VectorRef values)
 {
-    if (dimension_ == 3)
-        add_hessian_in<3>(x, projection, slots, values);
-    else
-        add_hessian_in<2>(x, projection, slots, values);
+    for (int k = 0; k < nodes_.cols(); ++k) {
+        const BodyDistance d = at_node(x, nodes_(0, k));
+        if (!(d.distance < 0.0))
+            continue;
+        const double depth = -d.distance;
+        const Eigen::Matrix3d normal_part = stiffness_ * d.gradient * d.gradient.transpose();  // ε ∇φ∇φᵀ
+        if (projection == Projection::clamp && curvature_ == ContactCurvature::gauss_newton) {
+            add_block(normal_part, dimension_, false, &slots(0, k), values.data());
+            continue;
+        }
+        const Eigen::Matrix3d H = normal_part - stiffness_ * depth * d.hessian;  // ε(∇φ∇φᵀ − δ∇²φ)
+        add_block(H, dimension_, projection == Projection::clamp, &slots(0, k), values.data());
+    }
+}
+
+double ObstaclePenaltyPotential::max_penetration(ConstVectorRef x) const
+{
+    double deepest = 0.0;
+    for (int k = 0; k < nodes_.cols(); ++k)
+        deepest = std::max(deepest, -at_node(x, nodes_(0, k)).distance);
+    return deepest;
+}
+
+Eigen::Vector3d ObstaclePenaltyPotential::total_force(ConstVectorRef x) const
+{
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();
+    for (int k = 0; k < nodes_.cols(); ++k) {
+        const BodyDistance d = at_node(x, nodes_(0, k));
+        if (d.distance < 0.0)
+            force -= stiffness_ * d.distance * d.gradient;  // ε δ ∇φ
+    }
+    return force;
+}
+
+void ObstaclePenaltyPotential::add_output_data(ConstVectorRef x, OutputArrays& arrays)
+{
+    Eigen::MatrixXd& depth = arrays.point_array("penetration", 1, 0.0);
+    Eigen::MatrixXd& force = arrays.point_array("contact_force", 3, 0.0);
+    for (int k = 0; k < nodes_.cols(); ++k) {
+        const int node = nodes_(0, k);
+        const BodyDistance d = at_node(x, node);
+        if (d.distance < 0.0) {
+            depth(0, node) = std::max(depth(0, node), -d.distance);
+            force.col(node) -= stiffness_ * d.distance * d.gradient;
+        }
+    }
 }
 
 } // namespace sinew

@@ -1,38 +1,59 @@
 #pragma once
-#include "sinew/energies/potentials/analytic_obstacle.hpp"
+#include "sinew/bodies/analytic_obstacle.hpp"
+#include "sinew/bodies/placed_body.hpp"
 #include "sinew/energies/potentials/potential.hpp"
 
+#include <memory>
 #include <vector>
 
 namespace sinew {
 
-/// Collisions with an analytic obstacle as an external penalty force (seed
-/// 000 §5.7): a node inside the obstacle is pushed back towards the surface
-/// by a force of strength ε scaled by its depth δ, f = ε δ ∇φ. Its potential,
+/// What a PSD-projected Hessian (Projection::clamp) keeps of a penalty
+/// node's ε(∇φ∇φᵀ − δ∇²φ).
+enum class ContactCurvature {
+    /// ε ∇φ∇φᵀ only, the Gauss–Newton part (PSD by construction).
+    gauss_newton,
+    /// The whole term with its negative eigenvalues clamped: it keeps the
+    /// body's curvature where it pushes a node back (inside a convex corner).
+    projected,
+};
+
+/// "gauss-newton" or "projected".
+std::string to_string(ContactCurvature curvature);
+
+/// Collisions with a rigid body as an external penalty force (seed 000
+/// §5.7): a node inside the body is pushed back towards the surface by a
+/// force of strength ε scaled by its depth δ, f = ε δ ∇φ. Its potential,
 /// one-sided quadratic in the signed distance φ (> 0 outside):
 ///
 ///     E(x) = Σ_i ε/2 δ_i²,   δ_i = max(0, −φ(x_i))
 ///     ∇_{x_i} E = −ε δ_i ∇φ
 ///     ∇²_{x_i} E = ε (∇φ ∇φᵀ − δ_i ∇²φ)                 (δ_i > 0; else 0)
 ///
-/// plane: φ = n̂·x − d, ∇²φ = 0, so ∇²E = ε n̂ n̂ᵀ;
-/// sphere: φ = ρ − r, ρ = |x − c|, u = (x − c)/ρ, ∇²φ = (I − u uᵀ)/ρ, so
-/// ∇²E = ε (u uᵀ − (δ/ρ)(I − u uᵀ)): its tangential eigenvalue −ε δ/ρ is
-/// negative, and Projection::clamp keeps ε u uᵀ.
+/// The body is any CollisionBody (an analytic plane or ball, a closed
+/// surface, a level set) at its current placement. Projection::none gives
+/// the exact Hessian; Projection::clamp what ContactCurvature says. On a
+/// plane ∇²φ = 0; on a ball's outside ∇²φ = (I − uuᵀ)/ρ, so the exact
+/// tangential eigenvalue −εδ/ρ is negative and both projections keep
+/// ε uuᵀ.
 ///
-/// E is C¹: the Hessian jumps from 0 to ε ∇φ∇φᵀ at the surface. At the center
-/// of a sphere (ρ = 0) the direction is undefined and the node gets zero
-/// gradient and Hessian. ε is in N/m (force per metre of depth, per node).
+/// E is C¹: the Hessian jumps from 0 to ε ∇φ∇φᵀ at the surface. Where ∇φ is
+/// undefined (the centre of a ball) the node gets zero gradient and
+/// Hessian. ε is in N/m (force per metre of depth, per node).
 class ObstaclePenaltyPotential final : public Potential {
 public:
     /// `nodes` the nodes that collide (each at most once); empty: every node.
-    /// InputError for a non-positive or non-finite stiffness, an obstacle of
-    /// another dimension, a zero or non-finite normal or center, a
-    /// non-positive radius, a node out of range or listed twice.
-    ObstaclePenaltyPotential(int dimension, int num_nodes, AnalyticObstacle obstacle, double stiffness,
+    /// InputError for a non-positive or non-finite stiffness, a null body or
+    /// one of another dimension than the scene's (a 3D body in 2D), a node
+    /// out of range or listed twice.
+    ObstaclePenaltyPotential(int dimension, int num_nodes, std::shared_ptr<const PlacedBody> body, double stiffness,
+                             std::vector<int> nodes = {},
+                             ContactCurvature curvature = ContactCurvature::gauss_newton);
+    /// An analytic obstacle (analytic_body's errors), at rest.
+    ObstaclePenaltyPotential(int dimension, int num_nodes, const AnalyticObstacle& obstacle, double stiffness,
                              std::vector<int> nodes = {});
 
-    std::string name() const override { return obstacle_kind(obstacle_) + " obstacle penalty"; }
+    std::string name() const override { return body_->body().kind() + " obstacle penalty"; }
     int dimension() const override { return dimension_; }
     int num_nodes() const override { return num_nodes_; }
     double value(ConstVectorRef x) override;
@@ -40,18 +61,25 @@ public:
     /// One single-node stencil per colliding node.
     const Stencils& hessian_stencils() const override { return nodes_; }
     void add_hessian(ConstVectorRef x, Projection projection, const StencilSlots& slots, VectorRef values) override;
+    /// "penetration" (δ per node, m) and "contact_force" (ε δ ∇φ per node, N).
+    void add_output_data(ConstVectorRef x, OutputArrays& arrays) override;
+
+    const PlacedBody& body() const { return *body_; }
+    /// The largest depth δ over the colliding nodes at x, m.
+    double max_penetration(ConstVectorRef x) const;
+    /// Σ_i ε δ_i ∇φ_i at x: the force the body exerts on the mesh, N.
+    Eigen::Vector3d total_force(ConstVectorRef x) const;
 
 private:
-    template <int Dim>
-    void add_gradient_in(ConstVectorRef x, VectorRef gradient) const;
-    template <int Dim>
-    void add_hessian_in(ConstVectorRef x, Projection projection, const StencilSlots& slots, VectorRef values) const;
+    /// φ and its derivatives at node `node` of x.
+    BodyDistance at_node(ConstVectorRef x, int node) const;
 
     int dimension_;
     int num_nodes_;
-    AnalyticObstacle obstacle_;  ///< plane normal stored normalized, offset scaled to match
-    double stiffness_;           ///< ε, N/m
-    Stencils nodes_;             ///< 1 × count
+    std::shared_ptr<const PlacedBody> body_;
+    double stiffness_;  ///< ε, N/m
+    ContactCurvature curvature_;
+    Stencils nodes_;    ///< 1 × count
 };
 
 } // namespace sinew

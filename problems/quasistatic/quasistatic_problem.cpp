@@ -76,6 +76,7 @@ QuasistaticProblem::QuasistaticProblem(const Eigen::MatrixXd& rest_positions,
             hessian_entries_.push_back(entry);
         }
     }
+    objective_hessian_nonzeros_ = hessian_pattern_.nonzeros();
     if (!eliminating()) {
         Eigen::VectorXd targets(num_prescribed_coordinates());
         for (int k = 0; k < num_prescribed_coordinates(); ++k)
@@ -94,6 +95,13 @@ QuasistaticProblem::QuasistaticProblem(const Eigen::MatrixXd& rest_positions,
 void QuasistaticProblem::map_constraint_sets()
 {
     // Variables are in coordinate order, so a lower-triangle entry stays one.
+    constraint_offsets_.clear();
+    jacobian_pattern_ = SparsityPattern();
+    jacobian_entries_.clear();
+    constraint_hessian_entries_.clear();
+    set_values_.clear();
+    hessian_pattern_.rows.resize(static_cast<std::size_t>(objective_hessian_nonzeros_));
+    hessian_pattern_.cols.resize(static_cast<std::size_t>(objective_hessian_nonzeros_));
     int offset = 0;
     for (int s = 0; s < static_cast<int>(constraint_sets_.size()); ++s) {
         ConstraintSet& set = *constraint_sets_[s];
@@ -166,8 +174,31 @@ int QuasistaticProblem::num_constraints() const
 
 void QuasistaticProblem::constraint_bounds(VectorRef lower, VectorRef upper) const
 {
-    lower.setZero();
-    upper.setZero();
+    for (int s = 0; s < static_cast<int>(constraint_sets_.size()); ++s) {
+        const int rows = constraint_sets_[s]->num_constraints();
+        constraint_sets_[s]->bounds(lower.segment(constraint_offsets_[s], rows),
+                                    upper.segment(constraint_offsets_[s], rows));
+    }
+}
+
+bool QuasistaticProblem::refresh_constraints(ConstVectorRef configuration)
+{
+    check_configuration(configuration);
+    bool changed = false;
+    for (const auto& set : constraint_sets_)
+        changed = set->refresh(configuration) || changed;
+    if (changed)
+        map_constraint_sets();
+    return changed;
+}
+
+bool QuasistaticProblem::constraint_rows_suffice(ConstVectorRef configuration) const
+{
+    check_configuration(configuration);
+    for (const auto& set : constraint_sets_)
+        if (!set->rows_suffice(configuration))
+            return false;
+    return true;
 }
 
 Nlp::Vector QuasistaticProblem::starting_point() const
@@ -270,14 +301,19 @@ void QuasistaticProblem::set_affine_map(int set, const Eigen::MatrixXd& map, con
     sets_[set] = std::move(updated);
 }
 
-void QuasistaticProblem::set_starting_configuration(ConstVectorRef configuration)
+void QuasistaticProblem::check_configuration(ConstVectorRef configuration) const
 {
     if (configuration.size() != rest_.size())
-        throw InputError("quasistatic problem '" + options_.name + "': starting configuration has " +
+        throw InputError("quasistatic problem '" + options_.name + "': configuration has " +
                          std::to_string(configuration.size()) + " coordinates, expected " +
                          std::to_string(rest_.size()));
     if (!configuration.allFinite())
-        throw InputError("quasistatic problem '" + options_.name + "': starting configuration is not finite");
+        throw InputError("quasistatic problem '" + options_.name + "': configuration is not finite");
+}
+
+void QuasistaticProblem::set_starting_configuration(ConstVectorRef configuration)
+{
+    check_configuration(configuration);
     start_ = configuration;
 }
 

@@ -100,6 +100,16 @@ public:
     /// non-finite entry.
     void set_starting_configuration(ConstVectorRef configuration);
 
+    /// Lets every constraint set choose its rows anew at `configuration`
+    /// (node-major, all coordinates; ConstraintSet::refresh, a contact
+    /// candidate set); when one does, the NLP's rows and patterns are mapped
+    /// again and true is returned: solvers made afterwards see the new rows.
+    /// Between solves only. InputError for a wrong size or a non-finite entry.
+    bool refresh_constraints(ConstVectorRef configuration);
+    /// Whether every set's rows still stand for all its constraints at
+    /// `configuration` (ConstraintSet::rows_suffice).
+    bool constraint_rows_suffice(ConstVectorRef configuration) const;
+
     /// All coordinates for the variables x: prescribed coordinates at their
     /// values (elimination) or as x has them (equality constraints).
     Eigen::VectorXd full_configuration(ConstVectorRef x) const;
@@ -122,8 +132,11 @@ private:
     /// full_x_ for the variables x (elimination: free entries replaced).
     const Eigen::VectorXd& configuration_of(ConstVectorRef x);
     void fill_hessian(ConstVectorRef x, Projection projection, double sigma, ConstVectorRef lambda, VectorRef values);
-    /// Maps every constraint set's Jacobian and Hessian entries to the variables, once.
+    /// Maps every constraint set's Jacobian and Hessian entries to the
+    /// variables: at construction and after a refresh that changed rows.
     void map_constraint_sets();
+    /// InputError unless `configuration` has every coordinate, finite.
+    void check_configuration(ConstVectorRef configuration) const;
 
     QuasistaticOptions options_;
     std::shared_ptr<TotalPotential> potential_;
@@ -134,6 +147,7 @@ private:
     std::vector<int> prescribed_coordinates_;  ///< sorted
     std::vector<int> free_coordinates_;        ///< sorted
     SparsityPattern hessian_pattern_;
+    int objective_hessian_nonzeros_ = 0;  ///< the first entries of hessian_pattern_, the potential's
     std::vector<int> hessian_entries_;  ///< for each NLP Hessian nonzero, its index in the potential's pattern
     SparsityPattern jacobian_pattern_;
     std::shared_ptr<PrescribedCoordinates> dirichlet_constraints_;  ///< equality strategy only

@@ -8,6 +8,8 @@
 #include "sinew/mesh/mesh.hpp"
 #include "sinew/problems/derivative_check.hpp"
 
+#include "bodies/body_surfaces.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -15,24 +17,9 @@
 #include <string>
 
 using namespace sinew;
+using sinew::test::cube_surface;
 
 namespace {
-
-/// The unit cube [0, 1]³ as 12 triangles, outward (or inward) facing.
-Mesh cube_surface(bool outward = true)
-{
-    Mesh mesh;
-    mesh.kind = ElementKind::triangle_3d;
-    mesh.nodes.resize(3, 8);
-    for (int i = 0; i < 8; ++i)
-        mesh.nodes.col(i) << (i & 1), ((i >> 1) & 1), ((i >> 2) & 1);
-    const int faces[12][3] = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
-                              {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
-    mesh.elements.resize(3, 12);
-    for (int t = 0; t < 12; ++t)
-        mesh.elements.col(t) << faces[t][0], (outward ? faces[t][1] : faces[t][2]), (outward ? faces[t][2] : faces[t][1]);
-    return mesh;
-}
 
 /// φ of a body as an unconstrained problem of three variables, so that the
 /// shared derivative check compares ∇φ and ∇²φ with differences of φ.

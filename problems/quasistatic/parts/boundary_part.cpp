@@ -11,9 +11,6 @@
 namespace sinew {
 namespace {
 
-/// A prescribed rotation turns by at most this many degrees (100 turns).
-constexpr double kMaxTurnDegrees = 36000.0;
-
 /// A factor s moves a set by M(s) = I + s(M − I) (scene.hpp), whose
 /// eigenvalues are 1 + s(λ − 1) over the eigenvalues λ of M: M(s) is singular
 /// exactly where a real λ ≠ 1 gives 1 + s(λ − 1) = 0, s = 1/(1 − λ). Why the
@@ -37,37 +34,6 @@ std::string blend_refusal(const Eigen::MatrixXd& M, double lowest, double highes
                    format_number(lowest) + ", " + format_number(highest) + "] it takes";
     }
     return "";
-}
-
-PrescribedMotion motion(const JsonCursor& b, int dimension)
-{
-    PrescribedMotion out;
-    out.map = Eigen::MatrixXd::Identity(dimension, dimension);
-    out.translation = Eigen::VectorXd::Zero(dimension);
-    out.center = Eigen::VectorXd::Zero(dimension);
-    if (b.has("rotation") && b.has("map"))
-        b.fail("give either rotation or map, not both");
-    if (auto r = b.find("rotation")) {
-        if (dimension == 3)
-            r->expect_object({"axis", "angle_deg", "center"});
-        else
-            r->expect_object({"angle_deg", "center"});
-        out.rotation = true;
-        out.angle = r->at("angle_deg").number_in(-kMaxTurnDegrees, kMaxTurnDegrees) * (M_PI / 180.0);
-        if (dimension == 3) {
-            const Eigen::Vector3d axis = r->at("axis").vector(3);
-            if (!(axis.norm() > 0.0))
-                r->at("axis").fail("axis must not be zero");
-            out.axis = axis.normalized();
-        }
-        if (auto c = r->find("center"))
-            out.center = c->vector(dimension);
-    }
-    if (auto m = b.find("map"))
-        out.map = m->matrix(dimension, dimension);
-    if (auto t = b.find("translation"))
-        out.translation = t->vector(dimension);
-    return out;
 }
 
 /// Set k's motion as a quantity a load factor scales.
@@ -118,7 +84,7 @@ public:
         for (size_t i = 0; i < list.size(); ++i) {
             const JsonCursor b = list[i];
             declared.expect_object(b, "[]");
-            PrescribedMotion m = motion(b, dimension);
+            PrescribedMotion m = prescribed_motion(b, dimension);
             DirichletSet set;
             set.name = b.has("name") ? b.at("name").string() : "boundary[" + std::to_string(i) + "]";
             set.nodes = selected_nodes(b.at("select"), scene.mesh, assembly.tolerance);

@@ -2,6 +2,7 @@
 #include "sinew/problems/quasistatic/parts/scene_reading.hpp"
 
 #include "sinew/mesh/box_tets.hpp"
+#include "sinew/mesh/graded_axis.hpp"
 #include "sinew/mesh/fusiform_muscle.hpp"
 #include "sinew/mesh/mesh_validation.hpp"
 #include "sinew/mesh/read_mesh.hpp"
@@ -40,9 +41,20 @@ Mesh generated_mesh(const JsonCursor& m)
     const std::string generator = m.at("generator").string();
     int total = 0;
     if (generator == "box") {
-        m.expect_object({"generator", "lower", "upper", "cells"});
+        m.expect_object({"generator", "lower", "upper", "cells", "grading"});
         const Eigen::Vector3i n = cell_counts(m.at("cells"), 3, total);
         const Eigen::Vector3d lower = extent_corner(m.at("lower"), 3), upper = extent_corner(m.at("upper"), 3);
+        if (auto g = m.find("grading")) {
+            g->expect_object({"focus", "ratio"});
+            const Eigen::Vector3d focus = g->at("focus").vector(3);
+            const double ratio = g->at("ratio").number_in(1.0, kMaxGradingRatio);
+            return at_place(*g, [&] {
+                std::array<std::vector<double>, 3> axes;
+                for (int a = 0; a < 3; ++a)
+                    axes[a] = graded_axis(lower[a], upper[a], n[a], focus[a], ratio);
+                return box_tets(axes);
+            });
+        }
         return at_place(m, [&] { return box_tets(lower, upper, n[0], n[1], n[2]); });
     }
     if (generator == "rectangle" || generator == "sheet") {
@@ -124,6 +136,8 @@ public:
                 {"lower", "vector", "", "", "box, rectangle, sheet: the lower corner"},
                 {"upper", "vector", "", "", "box, rectangle, sheet: the upper corner"},
                 {"cells", "integers", "[1, 100000] each", "", "box, rectangle, sheet: cells per axis"},
+                {"grading", "object", "{focus, ratio}", "equal cells",
+                 "box: cell widths grow by ratio ∈ [1, 2] per cell away from the point focus"},
                 {"length", "number", "", "", "fusiform-muscle: length (m)"},
                 {"belly_radius", "number", "", "", "fusiform-muscle: radius at the belly (m)"},
                 {"tendon_radius", "number", "", "", "fusiform-muscle: radius of the tendons (m)"},

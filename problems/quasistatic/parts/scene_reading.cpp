@@ -4,6 +4,7 @@
 #include "sinew/problems/quasistatic/node_selection.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <limits>
 
@@ -93,6 +94,40 @@ KeyframeCurve keyframes(const JsonCursor& list)
         keys.push_back({pair[0], pair[1]});
     }
     return KeyframeCurve(std::move(keys));
+}
+
+/// A prescribed rotation turns by at most this many degrees (100 turns).
+constexpr double kMaxTurnDegrees = 36000.0;
+
+PrescribedMotion prescribed_motion(const JsonCursor& b, int dimension)
+{
+    PrescribedMotion out;
+    out.map = Eigen::MatrixXd::Identity(dimension, dimension);
+    out.translation = Eigen::VectorXd::Zero(dimension);
+    out.center = Eigen::VectorXd::Zero(dimension);
+    if (b.has("rotation") && b.has("map"))
+        b.fail("give either rotation or map, not both");
+    if (auto r = b.find("rotation")) {
+        if (dimension == 3)
+            r->expect_object({"axis", "angle_deg", "center"});
+        else
+            r->expect_object({"angle_deg", "center"});
+        out.rotation = true;
+        out.angle = r->at("angle_deg").number_in(-kMaxTurnDegrees, kMaxTurnDegrees) * (M_PI / 180.0);
+        if (dimension == 3) {
+            const Eigen::Vector3d axis = r->at("axis").vector(3);
+            if (!(axis.norm() > 0.0))
+                r->at("axis").fail("axis must not be zero");
+            out.axis = axis.normalized();
+        }
+        if (auto c = r->find("center"))
+            out.center = c->vector(dimension);
+    }
+    if (auto m = b.find("map"))
+        out.map = m->matrix(dimension, dimension);
+    if (auto t = b.find("translation"))
+        out.translation = t->vector(dimension);
+    return out;
 }
 
 } // namespace sinew

@@ -4,6 +4,7 @@
 #include "sinew/core/input_error.hpp"
 #include "sinew/energies/models/model_parameters.hpp"
 #include "sinew/mesh/mesh.hpp"
+#include "sinew/problems/quasistatic/scene.hpp"
 #include "sinew/problems/quasistatic/strict_json.hpp"
 #include "sinew/time/keyframe_curve.hpp"
 
@@ -37,6 +38,11 @@ ParameterText parameter_text(const JsonCursor& p);
 /// [[t₀, v₀], [t₁, v₁], …]: at least one keyframe, times strictly
 /// increasing, every number finite; an error at the keyframe otherwise.
 KeyframeCurve keyframes(const JsonCursor& list);
+
+/// The motion at load factor 1 of an object with "rotation" ({axis,
+/// angle_deg, center}; no axis in 2D) or "map", and "translation" (each
+/// optional; not both rotation and map), as Dirichlet sets and bodies give it.
+PrescribedMotion prescribed_motion(const JsonCursor& b, int dimension);
 
 /// The index of the mesh group called `name`; an error at `where` listing the groups otherwise.
 int group_index(const JsonCursor& where, const Mesh& mesh, const std::string& name);
