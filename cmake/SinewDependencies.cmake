@@ -24,6 +24,18 @@ find_package(OpenMP REQUIRED)
 # libcgal-dev: CGAL 5.5, header-only (with GMP and MPFR); collision bodies
 # (bodies/: AABB tree closest points, Side_of_triangle_mesh).
 find_package(CGAL 5.5 REQUIRED)
+# libopenvdb-dev: OpenVDB 10 (with oneTBB): level set collision bodies
+# (bodies/level_set_body). Debian's FindOpenVDB.cmake asks for Boost
+# components the package does not pull in, so the library is found directly.
+find_path(OPENVDB_INCLUDE_DIR openvdb/openvdb.h REQUIRED)
+find_library(OPENVDB_LIBRARY openvdb REQUIRED)
+find_package(TBB CONFIG REQUIRED)
+# Imath's half floats, which OpenVDB's file I/O uses (found directly too: Debian's
+# ImathConfig.cmake names a Python module the package does not ship).
+find_library(IMATH_LIBRARY Imath-3_1 REQUIRED)
+add_library(OpenVDB::openvdb UNKNOWN IMPORTED)
+set_target_properties(OpenVDB::openvdb PROPERTIES IMPORTED_LOCATION "${OPENVDB_LIBRARY}"
+  INTERFACE_INCLUDE_DIRECTORIES "${OPENVDB_INCLUDE_DIR}" INTERFACE_LINK_LIBRARIES "TBB::tbb;${IMATH_LIBRARY}")
 # nlohmann-json3-dev: header-only; scene files and the CLI's JSON.
 find_package(nlohmann_json 3 REQUIRED)
 

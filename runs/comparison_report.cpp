@@ -29,15 +29,29 @@ std::string statistic(const Result& result, const char* name)
     return found == result.statistics.end() ? "-" : table_cell("%.0f", found->second);
 }
 
-std::string table_row(const ComparisonRun& run, double size)
+/// Whether any run met a collision body: the table then shows contact.
+bool has_contact(const Comparison& comparison)
+{
+    for (const ComparisonRun& run : comparison.runs)
+        if (run.contact.present)
+            return true;
+    return false;
+}
+
+std::string table_row(const ComparisonRun& run, double size, bool contact)
 {
     const Result& r = run.result;
+    const std::string contact_cells = contact ? " " + table_cell("%.2e", run.contact.max_penetration) + " | " +
+                                                    table_cell("%.6g", run.contact.force.norm()) + " | " +
+                                                    std::to_string(run.contact.contact_nodes) + " |"
+                                              : "";
     return "| " + run.strategy.label + " | " + (run.strategy.kappa ? kappa_text(*run.strategy.kappa) : "-") +
            " | " + to_string(r.status) + " | " + std::to_string(r.iterations) + " | " +
            statistic(r, "factorizations") + " | " + (r.linear_solves >= 0 ? std::to_string(r.linear_solves) : "-") +
            " | " + table_cell("%.3f", r.time_s) + " | " + table_cell("%.10g", r.objective) + " | " +
            table_cell("%.2e", r.constraint_violation) + " | " + table_cell("%.2e", r.kkt_residual) + " | " +
-           table_cell("%.2e", run.reference_distance) + " | " + table_cell("%.2e", run.reference_distance / size) + " |";
+           table_cell("%.2e", run.reference_distance) + " | " + table_cell("%.2e", run.reference_distance / size) + " |" +
+           contact_cells;
 }
 
 /// The κ sweep of one solver: κ, final max |c| and distance, and the slope.
@@ -116,11 +130,13 @@ Plot kappa_plot(const Comparison& comparison, bool distance)
 std::string comparison_markdown(const Comparison& comparison)
 {
     std::ostringstream out;
+    const bool contact = has_contact(comparison);
     out << "| strategy | κ | status | iterations | factorizations | linear solves | time (s) | energy | max \\|c\\| "
-           "| KKT residual | distance to reference | distance / size |\n"
-        << "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+           "| KKT residual | distance to reference | distance / size |"
+        << (contact ? " max penetration (m) | contact force \\|F\\| (N) | contact nodes |" : "") << "\n"
+        << "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|" << (contact ? "---:|---:|---:|" : "") << "\n";
     for (const ComparisonRun& run : comparison.runs)
-        out << table_row(run, comparison.size) << "\n";
+        out << table_row(run, comparison.size, contact) << "\n";
     out << "\n- scene size (bounding-box diagonal): " << table_cell("%.6g", comparison.size) << "\n"
         << "- κ scale max diag ∇²f / max diag JᵀJ at the start: " << table_cell("%.3g", comparison.kappa_scale) << "\n"
         << "- reference: "
@@ -140,12 +156,15 @@ std::string comparison_markdown(const Comparison& comparison)
 nlohmann::json comparison_json(const Comparison& comparison)
 {
     nlohmann::json runs = nlohmann::json::array();
-    for (const ComparisonRun& run : comparison.runs)
+    for (const ComparisonRun& run : comparison.runs) {
         runs.push_back({{"strategy", run.strategy.label},
                         {"solver", run.strategy.solver},
                         {"kappa", run.strategy.kappa ? number(*run.strategy.kappa) : nlohmann::json()},
                         {"reference_distance", number(run.reference_distance)},
                         {"result", to_json(run.result)}});
+        if (run.contact.present)
+            runs.back()["contact"] = to_json(run.contact);
+    }
     nlohmann::json sweeps = nlohmann::json::object();
     for (const std::string& solver : kappa_solvers()) {
         const Sweep sweep = sweep_of(comparison, solver);

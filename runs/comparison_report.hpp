@@ -10,7 +10,8 @@ namespace sinew {
 /// The markdown report of a comparison: one table row per strategy
 /// (strategy, κ, status, iterations, factorizations, linear solves, wall
 /// time, final energy, max |c|, KKT residual, max nodal distance to the
-/// reference), the reference, the κ sweeps of relaxed-kkt and penalty with
+/// reference; with contact, the deepest penetration, |F| and the nodes in
+/// contact), the reference, the κ sweeps of relaxed-kkt and penalty with
 /// the fitted slope d log max|c| / d log κ, and how each run that did not
 /// converge ended, in its solver's words.
 std::string comparison_markdown(const Comparison& comparison);

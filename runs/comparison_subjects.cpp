@@ -28,7 +28,9 @@ ComparisonSubject scene_subject(const std::function<Scene()>& make_scene, const 
         outcome.notes = resolved.notes;
         for (const ConstraintSetRank& rank : constraint_ranks(scene))
             outcome.constraint_ranks.push_back(describe(rank));
-        outcome.result = run_scene(scene, resolved.settings).last;
+        const SceneRunOutcome run = run_scene(scene, resolved.settings);
+        outcome.result = run.last;
+        outcome.contact = run.contact;
         outcome.positions = scene.problem->full_configuration(outcome.result.x);
         return outcome;
     };

@@ -29,13 +29,14 @@ ContactSummary contact_summary(const OutputArrays& arrays, const Eigen::MatrixXd
     if (forces == arrays.points.end())
         return summary;
     const Eigen::MatrixXd& f = forces->second;
+    const double largest = f.cols() > 0 ? f.colwise().norm().maxCoeff() : 0.0;
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
     double weight = 0.0;
     for (Eigen::Index i = 0; i < f.cols(); ++i) {
         const double magnitude = f.col(i).norm();
         if (magnitude == 0.0)
             continue;
-        ++summary.contact_nodes;
+        summary.contact_nodes += magnitude > kContactNodeFraction * largest ? 1 : 0;
         summary.force += f.col(i);
         centre += magnitude * position(positions, i);
         weight += magnitude;
@@ -56,14 +57,6 @@ ContactSummary contact_summary(const OutputArrays& arrays, const Eigen::MatrixXd
     }
     summary.contact_radius = std::sqrt(2.5 * moment / weight);  // Σ|f| r² / Σ|f| = 2a²/5
     return summary;
-}
-
-nlohmann::json to_json(const ContactSummary& summary)
-{
-    return {{"force", {summary.force.x(), summary.force.y(), summary.force.z()}},
-            {"max_penetration", summary.max_penetration},
-            {"contact_nodes", summary.contact_nodes},
-            {"contact_radius", summary.contact_radius}};
 }
 
 } // namespace sinew

@@ -54,4 +54,12 @@ nlohmann::json to_json(const Result& result)
             {"history", history}};
 }
 
+nlohmann::json to_json(const ContactSummary& summary)
+{
+    return {{"force", {summary.force.x(), summary.force.y(), summary.force.z()}},
+            {"max_penetration", summary.max_penetration},
+            {"contact_nodes", summary.contact_nodes},
+            {"contact_radius", summary.contact_radius}};
+}
+
 } // namespace sinew

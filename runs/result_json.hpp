@@ -1,4 +1,5 @@
 #pragma once
+#include "sinew/runs/contact_summary.hpp"
 #include "sinew/solvers/result.hpp"
 
 #include <nlohmann/json.hpp>
@@ -12,5 +13,8 @@ nlohmann::json number(double value);
 /// constraint_violation, kkt_residual, iterations, evaluations,
 /// linear_solves (null when the backend does not report it), time_s, history.
 nlohmann::json to_json(const Result& result);
+
+/// {"force": [...], "max_penetration", "contact_nodes", "contact_radius"}.
+nlohmann::json to_json(const ContactSummary& summary);
 
 } // namespace sinew

@@ -142,7 +142,12 @@ Comparison run_comparison(const ComparisonSubject& subject, const std::vector<Co
             progress.finished(k, count, strategy, outcome);
         if (k == 0)
             comparison.constraint_ranks = outcome.constraint_ranks;
-        comparison.runs.push_back({strategy, std::move(outcome.result), std::move(outcome.positions)});
+        ComparisonRun run;
+        run.strategy = strategy;
+        run.result = std::move(outcome.result);
+        run.positions = std::move(outcome.positions);
+        run.contact = outcome.contact;
+        comparison.runs.push_back(std::move(run));
     }
     int reference = converged_run(comparison.runs, "kkt-newton");
     if (reference < 0)

@@ -1,5 +1,6 @@
 #pragma once
 #include "sinew/problems/nlp.hpp"
+#include "sinew/runs/contact_summary.hpp"
 #include "sinew/solvers/result.hpp"
 #include "sinew/solvers/solver_options.hpp"
 
@@ -42,6 +43,7 @@ struct ComparisonSubject {
         Eigen::VectorXd positions;
         std::vector<std::string> notes;  ///< settings the run overrode or dropped
         std::vector<std::string> constraint_ranks;  ///< each constraint set's rank at the start (scenes)
+        ContactSummary contact;  ///< contact with the scene's bodies at the end (present: the scene has some)
     };
     std::function<Outcome(const ComparedStrategy& strategy, const SolverOptions& options)> run;
     /// Strategies on formulations other than make_nlp()'s that the subject
@@ -82,6 +84,7 @@ struct ComparisonRun {
     Eigen::VectorXd positions;
     /// max over nodes of ‖p_i − p_ref_i‖₂ (m for scenes); NaN without a reference.
     double reference_distance = std::numeric_limits<double>::quiet_NaN();
+    ContactSummary contact;  ///< as the subject's Outcome reported it
 };
 
 struct Comparison {

@@ -5,7 +5,8 @@
 For each scene it runs `sinew solve NAME` twice: at the scene's own settings,
 for the status a default solve ends with (a scene whose solver does not
 converge, like the rank-deficient locking block, is recorded as it ends), and
-at --tol 1e-12, for the equilibrium to round-off: its objective and a sample
+at --tol 1e-12 (or the tightest of 1e-11 … 1e-9 that converges; else the
+default solve), for the equilibrium to round-off: its objective and a sample
 of x, every s-th variable, s = max(1, n // 1500) made not a multiple of 3 so
 that every coordinate direction is sampled. Tests hold the default solve of a
 later commit to that equilibrium, within 1e-9 of the largest sampled
@@ -24,7 +25,10 @@ import sys
 import tempfile
 
 repo = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-TIGHT_TOLERANCE = "1e-12"
+# The tightest of these at which the scene's solver converges; a scene whose
+# equilibrium is not smooth (nodes resting on a faceted body's edges) may
+# converge only at the default 1e-8, and its default solve is recorded then.
+TIGHT_TOLERANCES = ["1e-12", "1e-11", "1e-10", "1e-9"]
 
 
 def stride_for(n):
@@ -47,10 +51,19 @@ def solve(sinew, name, extra):
 
 def record(sinew, name, version):
     default = solve(sinew, name, [])
-    tight = solve(sinew, name, ["--tol", TIGHT_TOLERANCE])
+    tight, tolerance = default, "1e-8 (default)"
+    for candidate in TIGHT_TOLERANCES:
+        run = solve(sinew, name, ["--tol", candidate])
+        if candidate == TIGHT_TOLERANCES[0] or run["result"]["status"] == "converged":
+            tight, tolerance = run, candidate
+        if run["result"]["status"] == "converged":
+            break
+    else:
+        if default["result"]["status"] == "converged":
+            tight, tolerance = default, "1e-8 (default; no tighter solve converged)"
     x = tight["result"]["x"]
     s = stride_for(len(x))
-    lines = [f"# equilibrium of built-in scene {name} by {tight['solver']} at --tol {TIGHT_TOLERANCE} "
+    lines = [f"# equilibrium of built-in scene {name} by {tight['solver']} at --tol {tolerance} "
              f"(status {tight['result']['status']}, {tight['result']['iterations']} iterations), "
              f"recorded with {version} by scripts/record_equilibria.py",
              f"status {default['result']['status']}",

@@ -15,6 +15,7 @@ packages=(
   libcli11-dev             # command line parsing
   libtet1.5-dev            # TetGen 1.5: tetrahedralization of closed surfaces
   libcgal-dev              # CGAL 5.5 (header-only): collision bodies' closest points and inside tests
+  libopenvdb-dev           # OpenVDB 10 (with oneTBB): level set collision bodies (.vdb, meshToLevelSet)
   python3                  # an independent XML parser for the VTU writer's test
   gnuplot-nox              # sinew compare's plots (PNG and SVG by its cairo terminals; no X)
   libpetsc-real-dev        # PETSc 3.18 with OpenMPI and hypre: the petsc-* linear solvers

@@ -89,6 +89,7 @@ void estimate_multipliers(Nlp& nlp, Nlp::ConstVectorRef x, double active_toleran
     auto near = [&](double value, double bound) {
         return is_finite_bound(bound) && std::abs(value - bound) <= active_tolerance * std::max(1.0, std::abs(bound));
     };
+    auto violated = [](double value, double lower, double upper) { return value < lower || value > upper; };
 
     Eigen::VectorXd c(m);
     if (m > 0)
@@ -97,7 +98,8 @@ void estimate_multipliers(Nlp& nlp, Nlp::ConstVectorRef x, double active_toleran
     // Columns of M: ∇cᵢ of each active constraint, then eⱼ of each active bound.
     std::vector<int> active_constraints;
     for (int i = 0; i < m; ++i)
-        if (b.c_lower[i] == b.c_upper[i] || near(c[i], b.c_lower[i]) || near(c[i], b.c_upper[i]))
+        if (b.c_lower[i] == b.c_upper[i] || near(c[i], b.c_lower[i]) || near(c[i], b.c_upper[i]) ||
+            violated(c[i], b.c_lower[i], b.c_upper[i]))
             active_constraints.push_back(i);
     std::vector<int> active_bounds;
     for (int j = 0; j < n; ++j)

@@ -17,7 +17,9 @@ double kkt_residual(Nlp& nlp, Nlp::ConstVectorRef x, Nlp::ConstVectorRef lambda,
 /// Multipliers for a backend that reports none: least squares
 ///   min ‖∇f + Σ_{active} μₐ ∇aₐ‖
 /// over the constraints and bounds active at x (within `active_tolerance`,
-/// equalities always active), by sparse QR. μ is split into λ, z_L, z_U;
+/// equalities always active, and a violated row too: at a penalty's
+/// stationary point the rows beyond their bounds are those that push), by
+/// sparse QR. μ is split into λ, z_L, z_U;
 /// wrong signs are left as they come so that kkt_residual shows them.
 void estimate_multipliers(Nlp& nlp, Nlp::ConstVectorRef x, double active_tolerance, Eigen::VectorXd& lambda,
                           Eigen::VectorXd& z_lower, Eigen::VectorXd& z_upper);

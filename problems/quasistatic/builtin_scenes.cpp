@@ -24,7 +24,9 @@ std::vector<BuiltinProblem> quasistatic_scenes()
         {"helical-block-3k", "inextensibility"},    {"helical-block-6k", "inextensibility"},
         {"draped-sheet", "inextensibility"},       {"spindle-contraction", "dynamics"},
         {"cantilever-6k-release", "dynamics"},      {"curtain-swing", "dynamics"},
-        {"spinning-block", "dynamics"},             {"helical-block-release", "dynamics"}};
+        {"spinning-block", "dynamics"},             {"helical-block-release", "dynamics"},
+        {"hertz-sphere", "contact"},               {"block-on-sphere", "contact"},
+        {"block-on-sphere-vdb", "contact"}};
     std::vector<BuiltinProblem> out;
     for (const auto& [name, suite] : scenes) {
         // The description is read from the file once, here; make() reads it again.

@@ -56,6 +56,8 @@ Scene parse_scene(const std::string& text, const std::string& document, const st
         return std::make_unique<QuasistaticProblem>(scene.mesh.nodes, total, assembly.dirichlet_sets, assembly.options);
     });
     scene.apply_load_factor(1.0);
+    // Rows chosen at the configuration a solve starts from (contact candidates with the bodies moved).
+    scene.problem->refresh_constraints(scene.problem->full_configuration(scene.problem->starting_point()));
     return scene;
 }
 

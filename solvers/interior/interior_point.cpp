@@ -336,6 +336,7 @@ bool InteriorPointRun::restore(Result& stop)
         return std::isfinite(phi) && search_->filter().accepts(theta, phi);
     };
     const int budget = std::max(0, options_.max_iterations - recorder_iterations_);
+    const VectorXd last_accepted = w_;
     const RestorationResult outcome = restoration_.run(w_, mu, options_.tolerance, budget, acceptable);
     restoration_iterations_ += outcome.iterations;
     recorder_.add_statistic("restoration_phases", 1.0);
@@ -344,6 +345,10 @@ bool InteriorPointRun::restore(Result& stop)
         return false;
     }
     if (outcome.outcome == RestorationOutcome::failed) {
+        w_ = last_accepted;  // the phase's own last point may be far worse than the iterate it started from
+        recorder_.count_evaluation();
+        f_ = nlp_.objective(w_);
+        evaluate_derivatives();
         stop = finish(Status::stalled, "the feasibility restoration phase failed: " + outcome.message);
         return false;
     }

@@ -1,9 +1,12 @@
 #pragma once
 // Closed triangle surfaces for the body tests: a unit cube (outward or
-// inward facing) and an L-shaped prism with a reflex edge.
+// inward facing) and an L-shaped prism with a reflex edge; a body's φ as
+// an NLP for the shared derivative check.
+#include "sinew/bodies/collision_body.hpp"
 #include "sinew/mesh/box_tets.hpp"
 #include "sinew/mesh/mesh.hpp"
 #include "sinew/mesh/remove_unused_nodes.hpp"
+#include "sinew/problems/nlp.hpp"
 
 #include <algorithm>
 #include <array>
@@ -61,5 +64,38 @@ inline Mesh l_shaped_surface()
     remove_unused_nodes(mesh);  // the box's nodes inside the removed cell's corner
     return mesh;
 }
+
+/// φ of a body as an unconstrained problem of three variables, so that the
+/// shared derivative check compares ∇φ and ∇²φ with differences of φ.
+class DistanceProblem final : public Nlp {
+public:
+    DistanceProblem(const CollisionBody& body, Eigen::Vector3d start) : body_(body), start_(std::move(start))
+    {
+        for (int row = 0; row < 3; ++row)
+            for (int col = 0; col <= row; ++col)
+                hessian_.add(row, col);
+    }
+    std::string name() const override { return "signed-distance"; }
+    int num_variables() const override { return 3; }
+    Vector starting_point() const override { return start_; }
+    double objective(ConstVectorRef x) override { return body_.distance(x).distance; }
+    void gradient(ConstVectorRef x, VectorRef g) override { g = body_.distance(x).gradient; }
+    const SparsityPattern& hessian_pattern() const override { return hessian_; }
+
+protected:
+    void hessian_values(ConstVectorRef x, double sigma, ConstVectorRef, VectorRef values) override
+    {
+        const Eigen::Matrix3d h = sigma * body_.distance(x).hessian;
+        int k = 0;
+        for (int row = 0; row < 3; ++row)
+            for (int col = 0; col <= row; ++col)
+                values[k++] = h(row, col);
+    }
+
+private:
+    const CollisionBody& body_;
+    Vector start_;
+    SparsityPattern hessian_;
+};
 
 } // namespace sinew::test

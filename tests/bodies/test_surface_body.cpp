@@ -18,43 +18,7 @@
 
 using namespace sinew;
 using sinew::test::cube_surface;
-
-namespace {
-
-/// φ of a body as an unconstrained problem of three variables, so that the
-/// shared derivative check compares ∇φ and ∇²φ with differences of φ.
-class DistanceProblem final : public Nlp {
-public:
-    DistanceProblem(const SurfaceBody& body, Eigen::Vector3d start) : body_(body), start_(std::move(start))
-    {
-        for (int row = 0; row < 3; ++row)
-            for (int col = 0; col <= row; ++col)
-                hessian_.add(row, col);
-    }
-    std::string name() const override { return "signed-distance"; }
-    int num_variables() const override { return 3; }
-    Vector starting_point() const override { return start_; }
-    double objective(ConstVectorRef x) override { return body_.query(x).distance; }
-    void gradient(ConstVectorRef x, VectorRef g) override { g = body_.query(x).gradient; }
-    const SparsityPattern& hessian_pattern() const override { return hessian_; }
-
-protected:
-    void hessian_values(ConstVectorRef x, double sigma, ConstVectorRef, VectorRef values) override
-    {
-        const Eigen::Matrix3d h = sigma * body_.query(x).hessian();
-        int k = 0;
-        for (int row = 0; row < 3; ++row)
-            for (int col = 0; col <= row; ++col)
-                values[k++] = h(row, col);
-    }
-
-private:
-    const SurfaceBody& body_;
-    Vector start_;
-    SparsityPattern hessian_;
-};
-
-} // namespace
+using sinew::test::DistanceProblem;
 
 TEST_CASE("a cube body gives the signed distance, closest point and feature of faces, edges and vertices")
 {

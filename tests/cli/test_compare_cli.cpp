@@ -91,6 +91,44 @@ TEST_CASE("sinew compare writes the table, compare.json and PNG and SVG plots of
     }
 }
 
+TEST_CASE("sinew compare on a contact scene puts penetration and contact force beside iterations and time")
+{
+    const std::string folder = scratch("compare_contact");
+    std::filesystem::remove_all(folder);
+    // One load step: the penalty at a fixed κ ends tolerance_not_met, which stops load stepping.
+    const auto run = run_sinew("compare block-on-sphere --solvers ipopt,interior-point,penalty --kappa 1e4,1e6 "
+                               "--load-steps 1 --no-plots --quiet --output '" + folder + "'");
+    CAPTURE(run.out, run.err);
+    REQUIRE(run.exit_code == 0);
+    CHECK(run.out.find("| max penetration (m) | contact force \\|F\\| (N) | contact nodes |") != std::string::npos);
+    const nlohmann::json compare = read_json(folder + "/compare.json");
+    std::map<std::string, nlohmann::json> runs;
+    for (const auto& r : compare["runs"]) {
+        INFO(r["strategy"]);
+        REQUIRE(r.contains("contact"));
+        runs[r["strategy"].get<std::string>()] = r;
+    }
+    REQUIRE(runs.size() == 4);
+    auto force = [&](const char* strategy) { return runs[strategy]["contact"]["force"][2].get<double>(); };
+    auto depth = [&](const char* strategy) { return runs[strategy]["contact"]["max_penetration"].get<double>(); };
+    // The ball pushes the block up. The exact strategies agree on the push and
+    // leave no node deeper in the ball than their gap rows' violation allows
+    // (rows are φ/L, L the scene's size).
+    CHECK(force("ipopt") > 0.0);
+    for (const char* exact : {"ipopt", "interior-point"}) {
+        INFO(exact);
+        REQUIRE(runs[exact]["result"]["status"] == "converged");
+        const double violation = runs[exact]["result"]["constraint_violation"].get<double>();
+        CHECK(depth(exact) <= violation * compare["size"].get<double>() * (1.0 + 1e-9));
+        CHECK(force(exact) == Approx(force("ipopt")).epsilon(1e-6));
+    }
+    // The penalty on the same rows lets the ball in, less and with a push
+    // closer to the exact one as κ grows.
+    CHECK(depth("penalty κ=1e4") > 10.0 * depth("penalty κ=1e6"));
+    CHECK(depth("penalty κ=1e6") > 0.0);
+    CHECK(std::abs(force("penalty κ=1e6") - force("ipopt")) < std::abs(force("penalty κ=1e4") - force("ipopt")));
+}
+
 TEST_CASE("sinew compare reports its progress on standard error unless --quiet")
 {
     const std::string folder = scratch("compare_quiet");

@@ -30,3 +30,6 @@ TEST_CASE("locking-block reaches its recorded equilibrium") { check_recorded_equ
 TEST_CASE("helical-block-1k reaches its recorded equilibrium") { check_recorded_equilibrium("helical-block-1k"); }
 TEST_CASE("helical-block-3k reaches its recorded equilibrium") { check_recorded_equilibrium("helical-block-3k"); }
 TEST_CASE("helical-block-6k reaches its recorded equilibrium") { check_recorded_equilibrium("helical-block-6k"); }
+TEST_CASE("hertz-sphere reaches its recorded equilibrium") { check_recorded_equilibrium("hertz-sphere"); }
+TEST_CASE("block-on-sphere reaches its recorded equilibrium") { check_recorded_equilibrium("block-on-sphere"); }
+TEST_CASE("block-on-sphere-vdb reaches its recorded equilibrium") { check_recorded_equilibrium("block-on-sphere-vdb"); }

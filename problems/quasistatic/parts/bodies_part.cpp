@@ -2,17 +2,21 @@
 #include "sinew/problems/quasistatic/parts/scene_reading.hpp"
 
 #include "sinew/bodies/analytic_obstacle.hpp"
+#include "sinew/bodies/level_set_body.hpp"
 #include "sinew/bodies/surface_body.hpp"
 #include "sinew/core/format_number.hpp"
 #include "sinew/energies/constraints/body_gaps.hpp"
 #include "sinew/energies/potentials/obstacle_penalty_potential.hpp"
 #include "sinew/mesh/icosphere.hpp"
+#include "sinew/mesh/obj_reader.hpp"
 
 namespace sinew {
 namespace {
 
 /// The default candidate margin of gap constraints, times the scene's size.
 constexpr double kDefaultMarginFraction = 0.05;
+/// A level set's default band, voxels on each side of the surface (OpenVDB's LEVEL_SET_HALF_WIDTH).
+constexpr double kDefaultHalfWidth = 3.0;
 
 /// A 2D rotation or 3D map as a 3 × 3 rotation, a 2D vector as (x, y, 0).
 Eigen::Matrix3d embedded(const Eigen::MatrixXd& rotation)
@@ -28,29 +32,57 @@ Eigen::Vector3d embedded(const Eigen::VectorXd& v)
     return out;
 }
 
-/// The body of entry `o`: an OBJ surface, a plane or a sphere.
+/// A closed triangle surface and its name: an OBJ file (string) or
+/// {generator: icosphere, center, radius, subdivisions}.
+std::pair<Mesh, std::string> surface_mesh(const JsonCursor& s, const std::string& base_folder)
+{
+    if (!s.is_object()) {
+        const std::string path = resolve_path(s.string(), base_folder);
+        return {at_place(s, [&] { return read_obj(path); }), path};
+    }
+    s.expect_object({"generator", "center", "radius", "subdivisions"});
+    const std::string generator = s.at("generator").string();
+    if (generator != "icosphere")
+        s.at("generator").fail("unknown surface generator '" + generator + "'; valid: icosphere");
+    const Eigen::Vector3d center = s.at("center").vector(3);
+    const double radius = s.at("radius").number();
+    const int subdivisions = s.at("subdivisions").integer_in(0, kMaxIcosphereSubdivisions);
+    return {at_place(s, [&] { return icosphere(center, radius, subdivisions); }), "icosphere"};
+}
+
+/// A level set body: a `.vdb` file (string) or {surface, voxel_size, half_width}
+/// converted by OpenVDB.
+std::shared_ptr<const CollisionBody> level_set_body(const JsonCursor& l, const std::string& base_folder)
+{
+    if (!l.is_object()) {
+        const std::string path = resolve_path(l.string(), base_folder);
+        return at_place(l, [&] { return std::make_shared<const LevelSetBody>(LevelSetBody::from_vdb(path)); });
+    }
+    l.expect_object({"surface", "voxel_size", "half_width"});
+    const auto [surface, name] = surface_mesh(l.at("surface"), base_folder);
+    const double voxel_size = l.at("voxel_size").number();
+    const double half_width = l.has("half_width") ? l.at("half_width").number() : kDefaultHalfWidth;
+    return at_place(l, [&, &surface = surface, &name = name] {
+        return std::make_shared<const LevelSetBody>(LevelSetBody::from_surface(surface, name, voxel_size, half_width));
+    });
+}
+
+/// The body of entry `o`: an OBJ surface, a level set, a plane or a sphere.
 std::shared_ptr<const CollisionBody> read_body(const JsonCursor& o, int dimension, const std::string& base_folder)
 {
-    if (o.has("surface") + o.has("plane") + o.has("sphere") != 1)
-        o.fail("give exactly one of surface, plane, sphere");
+    if (o.has("surface") + o.has("level_set") + o.has("plane") + o.has("sphere") != 1)
+        o.fail("give exactly one of surface, level_set, plane, sphere");
+    for (const char* key : {"surface", "level_set"})
+        if (o.has(key) && dimension != 3)
+            o.at(key).fail(std::string("a ") + (key[0] == 's' ? "surface" : "level set") + " body needs a 3D scene");
     if (auto s = o.find("surface")) {
-        if (dimension != 3)
-            s->fail("a surface body needs a 3D scene");
-        if (!s->is_object()) {
-            const std::string path = resolve_path(s->string(), base_folder);
-            return at_place(*s, [&] { return std::make_shared<const SurfaceBody>(SurfaceBody::from_obj(path)); });
-        }
-        s->expect_object({"generator", "center", "radius", "subdivisions"});
-        const std::string generator = s->at("generator").string();
-        if (generator != "icosphere")
-            s->at("generator").fail("unknown surface generator '" + generator + "'; valid: icosphere");
-        const Eigen::Vector3d center = s->at("center").vector(3);
-        const double radius = s->at("radius").number();
-        const int subdivisions = s->at("subdivisions").integer_in(0, kMaxIcosphereSubdivisions);
-        return at_place(*s, [&] {
-            return std::make_shared<const SurfaceBody>(icosphere(center, radius, subdivisions), "icosphere");
+        const auto [surface, name] = surface_mesh(*s, base_folder);
+        return at_place(*s, [&, &surface = surface, &name = name] {
+            return std::make_shared<const SurfaceBody>(surface, name);
         });
     }
+    if (auto l = o.find("level_set"))
+        return level_set_body(*l, base_folder);
     if (auto p = o.find("plane")) {
         p->expect_object({"point", "normal"});
         const Eigen::VectorXd point = p->at("point").vector(dimension), normal = p->at("normal").vector(dimension);
@@ -115,7 +147,7 @@ public:
     std::string key() const override { return "bodies"; }
     std::string doc() const override
     {
-        return "rigid collision bodies (OBJ surface, plane, sphere) held off by a penalty or by gap constraints";
+        return "rigid collision bodies (OBJ surface, level set, plane, sphere) held off by a penalty or by gap constraints";
     }
     std::string kind() const override { return "constraints"; }
     int stage() const override { return 51; }
@@ -124,6 +156,8 @@ public:
         return {{"[].name", "string", "", "the file or kind", "the body's name in messages"},
                 {"[].surface", "string or object", "an OBJ file | {generator: icosphere, center, radius, subdivisions}", "",
                  "the body's closed triangle surface, 3D scenes"},
+                {"[].level_set", "string or object", "a .vdb file | {surface, voxel_size, half_width}", "",
+                 "the body's signed distance on an OpenVDB grid (first float level set grid of the file, or the surface converted; half_width 3 voxels), 3D scenes"},
                 {"[].plane", "object", "{point, normal}", "", "the half space n·(x − p) < 0 is the body"},
                 {"[].sphere", "object", "{center, radius}", "", "the ball |x − c| < r is the body"},
                 {"[].rotation", "object", "{axis, angle_deg, center}", "", "turns the body by R(θ) about c at load factor 1"},

@@ -9,7 +9,9 @@
 #include "sinew/mesh/rectangle_triangles.hpp"
 #include "sinew/mesh/tetrahedralize_surface.hpp"
 
+#include <array>
 #include <cmath>
+#include <vector>
 
 namespace sinew {
 namespace {
@@ -36,26 +38,51 @@ Eigen::VectorXd extent_corner(const JsonCursor& corner, int dimension)
     return corner.vector_in(dimension, -kMaxCoordinate, kMaxCoordinate);
 }
 
+/// A box's cells are halved at most this many times along each axis.
+constexpr int kMaxHalvings = 6;
+
+/// The axis with a node added in the middle of every cell, `times` times:
+/// nested refinement, each mesh's nodes among the next one's.
+std::vector<double> halved(std::vector<double> nodes, int times)
+{
+    for (int t = 0; t < times; ++t) {
+        std::vector<double> finer{nodes.front()};
+        for (size_t i = 1; i < nodes.size(); ++i) {
+            finer.push_back(0.5 * (nodes[i - 1] + nodes[i]));
+            finer.push_back(nodes[i]);
+        }
+        nodes = std::move(finer);
+    }
+    return nodes;
+}
+
 Mesh generated_mesh(const JsonCursor& m)
 {
     const std::string generator = m.at("generator").string();
     int total = 0;
     if (generator == "box") {
-        m.expect_object({"generator", "lower", "upper", "cells", "grading"});
+        m.expect_object({"generator", "lower", "upper", "cells", "grading", "halvings"});
         const Eigen::Vector3i n = cell_counts(m.at("cells"), 3, total);
         const Eigen::Vector3d lower = extent_corner(m.at("lower"), 3), upper = extent_corner(m.at("upper"), 3);
+        const int halvings = m.has("halvings") ? m.at("halvings").integer_in(0, kMaxHalvings) : 0;
+        if (6.0 * total * std::pow(8.0, halvings) > kMaxGeneratedElements)
+            m.at("halvings").fail("more than 2e7 elements");
+        std::array<std::vector<double>, 3> axes;
+        const JsonCursor where = m.has("grading") ? m.at("grading") : m;
+        Eigen::Vector3d focus = lower;
+        double ratio = 1.0;
         if (auto g = m.find("grading")) {
             g->expect_object({"focus", "ratio"});
-            const Eigen::Vector3d focus = g->at("focus").vector(3);
-            const double ratio = g->at("ratio").number_in(1.0, kMaxGradingRatio);
-            return at_place(*g, [&] {
-                std::array<std::vector<double>, 3> axes;
-                for (int a = 0; a < 3; ++a)
-                    axes[a] = graded_axis(lower[a], upper[a], n[a], focus[a], ratio);
-                return box_tets(axes);
-            });
+            focus = g->at("focus").vector(3);
+            ratio = g->at("ratio").number_in(1.0, kMaxGradingRatio);
         }
-        return at_place(m, [&] { return box_tets(lower, upper, n[0], n[1], n[2]); });
+        return at_place(where, [&] {
+            if (!m.has("grading") && halvings == 0)
+                return box_tets(lower, upper, n[0], n[1], n[2]);
+            for (int a = 0; a < 3; ++a)
+                axes[a] = halved(graded_axis(lower[a], upper[a], n[a], focus[a], ratio), halvings);
+            return box_tets(axes);
+        });
     }
     if (generator == "rectangle" || generator == "sheet") {
         m.expect_object({"generator", "lower", "upper", "cells"});
@@ -138,6 +165,8 @@ public:
                 {"cells", "integers", "[1, 100000] each", "", "box, rectangle, sheet: cells per axis"},
                 {"grading", "object", "{focus, ratio}", "equal cells",
                  "box: cell widths grow by ratio ∈ [1, 2] per cell away from the point focus"},
+                {"halvings", "integer", "[0, 6]", "0",
+                 "box: every cell cut in two along each axis this many times (nested refinement)"},
                 {"length", "number", "", "", "fusiform-muscle: length (m)"},
                 {"belly_radius", "number", "", "", "fusiform-muscle: radius at the belly (m)"},
                 {"tendon_radius", "number", "", "", "fusiform-muscle: radius of the tendons (m)"},
