@@ -168,11 +168,12 @@ LevelSetBody LevelSetBody::from_surface(const Mesh& surface, const std::string& 
         throw InputError(where + ": voxel_size " + format_number(voxel_size) + " must be positive and finite");
     if (!std::isfinite(half_width) || half_width < 1.0 || half_width > 64.0)
         throw InputError(where + ": half_width " + format_number(half_width) + " must lie in [1, 64] voxels");
-    const double across = (checked.upper() - checked.lower()).maxCoeff() / voxel_size;
-    if (across > kMaxLevelSetVoxelsAcross)
-        throw InputError(where + ": voxel_size " + format_number(voxel_size) + " spans the surface with " +
-                         format_number(std::ceil(across)) + " voxels; at most " +
-                         std::to_string(kMaxLevelSetVoxelsAcross));
+    const double extent = (checked.upper() - checked.lower()).maxCoeff();
+    const double finest = extent / kMaxLevelSetVoxelsAcross;
+    if (voxel_size < finest)
+        throw InputError(where + ": voxel_size " + format_number(voxel_size) + " is finer than " +
+                         format_number(finest) + " (the surface's extent " + format_number(extent) + " over at most " +
+                         std::to_string(kMaxLevelSetVoxelsAcross) + " voxels)");
     initialize_openvdb();
     std::vector<openvdb::Vec3s> points;
     for (Eigen::Index i = 0; i < surface.nodes.cols(); ++i)
