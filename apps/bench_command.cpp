@@ -109,19 +109,45 @@ struct ProfileData {
     std::vector<StrategyCosts> iterations, time;
 };
 
-/// One run: a built-in scene through the scene runner (the one way a scene
-/// is run), any other problem through solve().
-Result run_strategy(const BuiltinProblem& problem, const std::string& solver, const SolverOptions& options)
+/// One run of a strategy on a built-in problem: the result (a load-stepped
+/// scene's last step), and for a scene its totals over the load steps and
+/// its contact with the scene's bodies.
+struct StrategyRun {
+    Result result;
+    int total_iterations = 0;
+    double total_time_s = 0.0;
+    ContactSummary contact;
+};
+
+/// A built-in scene runs through the scene runner (the one way a scene is
+/// run), any other problem through solve().
+StrategyRun run_strategy(const BuiltinProblem& problem, const std::string& solver, const SolverOptions& options)
 {
     if (problem.scene.empty()) {
         const std::unique_ptr<Nlp> nlp = problem.make();
-        return solve(*nlp, solver, options);
+        Result result = solve(*nlp, solver, options);
+        const int iterations = result.iterations;
+        const double time_s = result.time_s;
+        return {std::move(result), iterations, time_s, ContactSummary{}};
     }
     Scene scene = make_builtin_scene(problem.scene);
     SceneRunRequest request;
     request.solver = solver;
     request.options = options;
-    return run_scene(scene, resolve_scene_run(scene, request).settings).last;
+    SceneRunOutcome outcome = run_scene(scene, resolve_scene_run(scene, request).settings);
+    return {std::move(outcome.last), outcome.total_iterations, outcome.total_time_s, outcome.contact};
+}
+
+/// A row of the contact table: the run's totals over its load steps and the
+/// bodies' push on the mesh at its last solution.
+std::string contact_row(const std::string& problem, const std::string& strategy, const StrategyRun& run)
+{
+    const ContactSummary& c = run.contact;
+    return "| " + problem + " | " + strategy + " | " + to_string(run.result.status) + " | " +
+           std::to_string(run.total_iterations) + " | " + table_cell("%.3f", run.total_time_s) + " | " +
+           table_cell("%.6g", c.force.norm()) + " | " + table_cell("%.6g", c.force.z()) + " | " +
+           table_cell("%.2e", c.max_penetration) + " | " + std::to_string(c.contact_nodes) + " | " +
+           table_cell("%.4g", c.contact_radius) + " |";
 }
 
 std::string newton_row(const std::string& problem, const std::string& strategy, const Result& result)
@@ -144,7 +170,7 @@ bool run_problems(const BenchFlags& flags, const SolverOptions& options, nlohman
                  "| constraint violation | KKT residual | time (s) | reached f* |\n"
               << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
     const std::vector<Strategy> strategies = bench_strategies(flags);
-    std::vector<std::string> skipped, newton_rows;
+    std::vector<std::string> skipped, newton_rows, contact_rows;
     ProfileData profile;
     for (const Strategy& s : strategies) {
         profile.iterations.push_back({s.label, {}});
@@ -169,7 +195,10 @@ bool run_problems(const BenchFlags& flags, const SolverOptions& options, nlohman
             SolverOptions run_options = options;
             for (const auto& [key, value] : strategy.backend)
                 run_options.backend[key] = value;
-            const Result result = run_strategy(problem, strategy.solver, run_options);
+            const StrategyRun run = run_strategy(problem, strategy.solver, run_options);
+            const Result& result = run.result;
+            if (run.contact.present)
+                contact_rows.push_back(contact_row(problem.name, strategy.label, run));
             const double error = optimum_error(problem, result);
             const bool good = reaches_reference(problem, result, flags.reference);
             all_good = all_good && good;
@@ -186,14 +215,18 @@ bool run_problems(const BenchFlags& flags, const SolverOptions& options, nlohman
                 newton_rows.push_back(newton_row(problem.name, strategy.label, result));
             iterations.push_back(good ? result.iterations : kUnsolved);
             times.push_back(good ? result.time_s : kUnsolved);
-            nlohmann::json run = to_json(result);
-            run["suite"] = problem.suite;
-            run["strategy"] = strategy.label;
-            run["reference_objective"] =
+            nlohmann::json json_run = to_json(result);
+            json_run["suite"] = problem.suite;
+            json_run["strategy"] = strategy.label;
+            json_run["reference_objective"] =
                 problem.reference_objective ? number(*problem.reference_objective) : nlohmann::json();
-            run["optimum_relative_error"] = number(error);
-            run["reached_reference"] = good;
-            runs.push_back(run);
+            json_run["optimum_relative_error"] = number(error);
+            json_run["reached_reference"] = good;
+            json_run["total_iterations"] = run.total_iterations;
+            json_run["total_time_s"] = number(run.total_time_s);
+            if (run.contact.present)
+                json_run["contact"] = to_json(run.contact);
+            runs.push_back(json_run);
         }
         for (size_t s = 0; s < strategies.size(); ++s) {
             profile.iterations[s].costs.push_back(iterations[s]);
@@ -205,6 +238,13 @@ bool run_problems(const BenchFlags& flags, const SolverOptions& options, nlohman
                      "| one factorization (s) | total (s) | total / (iterations × one factorization) |\n"
                   << "|---|---|---:|---:|---:|---:|---:|---:|\n";
         for (const auto& row : newton_rows)
+            std::cout << row << "\n";
+    }
+    if (!contact_rows.empty()) {
+        std::cout << "\n| problem | solver | status | iterations (all load steps) | time, all load steps (s) "
+                     "| contact force \\|F\\| (N) | F_z (N) | max penetration (m) | contact nodes | contact radius (m) |\n"
+                  << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
+        for (const auto& row : contact_rows)
             std::cout << row << "\n";
     }
     // Strategies that accepted no problem of the suite are left out of the profiles.

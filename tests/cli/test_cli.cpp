@@ -125,6 +125,26 @@ TEST_CASE("sinew bench prints a markdown table and a JSON file")
     CHECK(b["runs"][0]["reached_reference"] == true);
 }
 
+TEST_CASE("sinew bench on a contact scene adds the contact force and penetration, summed over load steps")
+{
+    const std::string path = scratch("bench_contact.json");
+    const Run run = run_sinew("bench --suite contact --solver interior-point --problem block-on-sphere --json '" + path + "'");
+    CAPTURE(run.out, run.err);
+    CHECK(run.exit_code == 0);
+    CHECK(run.out.find("| problem | solver | status | iterations (all load steps) |") != std::string::npos);
+    CHECK(run.out.find("| block-on-sphere | interior-point | converged |") != std::string::npos);
+    const auto b = read_json(path);
+    REQUIRE(b["runs"].size() == 1);
+    const auto& r = b["runs"][0];
+    // Two load steps: the totals hold the first step's iterations too.
+    CHECK(r["total_iterations"].get<int>() > r["iterations"].get<int>());
+    CHECK(r["total_time_s"].get<double>() >= r["time_s"].get<double>());
+    // The ball holds the block up against gravity, and nothing is inside it.
+    CHECK(r["contact"]["force"][2].get<double>() > 0.0);
+    CHECK(r["contact"]["max_penetration"].get<double>() <= 1e-6);
+    CHECK(r["contact"]["contact_nodes"].get<int>() > 0);
+}
+
 TEST_CASE("every subcommand has --help")
 {
     for (const char* command : {"", "list", "solve", "check", "bench"}) {
