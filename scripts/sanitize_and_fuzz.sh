@@ -142,8 +142,9 @@ add_bad_input_seeds() {
 
 # --- the test suite, sanitized ------------------------------------------------
 if [ "$SKIP_CTEST" != 1 ]; then
-  # Label heavy (solves of the 52k and 206k scenes) would take many minutes
-  # each under the sanitizers; the Release suite runs them.
+  # Label heavy (solves of the 52k and 206k scenes, studies of many solves:
+  # tests/CMakeLists.txt) would take many minutes each under the sanitizers;
+  # the Release suite runs them.
   echo "sanitize_and_fuzz: ctest (sanitized, without label heavy), -j $CTEST_JOBS"
   if ! ctest --test-dir "$build" --output-on-failure -j "$CTEST_JOBS" -LE heavy; then
     echo "sanitize_and_fuzz: FAILED: sanitized ctest" >&2

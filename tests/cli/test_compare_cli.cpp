@@ -1,8 +1,7 @@
 // sinew compare as a user runs it: the table, compare.json and the plots in
 // the folder, the plotted data equal to the runs' histories.
+#include "compare_test_support.hpp"
 #include "run_sinew.hpp"
-
-#include "sinew/runs/gnuplot_plot.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -12,59 +11,21 @@ using sinew::test::read_json;
 using sinew::test::run_sinew;
 using sinew::test::scratch;
 using sinew::test::slurp;
+using namespace sinew::test::compare;
 
-namespace {
-
-bool has_png_signature(const std::string& path)
-{
-    const std::string bytes = slurp(path);
-    return bytes.size() > 8 && bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0;
-}
-
-bool is_svg(const std::string& path)
-{
-    const std::string text = slurp(path);
-    return text.find("<svg") != std::string::npos && text.find("</svg>") != std::string::npos;
-}
-
-/// A JSON number, or NaN for null (compare.json writes non-finite values as null).
-double value_of(const nlohmann::json& v) { return v.is_null() ? std::nan("") : v.get<double>(); }
-
-bool same(double a, double b) { return (std::isnan(a) && std::isnan(b)) || a == b; }
-
-/// Every run's history column `field` equals the series of the same title in `<stem>.dat`.
-void check_history_plot(const std::string& folder, const std::string& stem, const nlohmann::json& runs,
-                        const std::string& field)
-{
-    std::map<std::string, sinew::PlotSeries> series;
-    for (auto& s : sinew::read_plot_data(folder + "/" + stem + ".dat"))
-        series[s.title] = s;
-    REQUIRE(series.size() == runs.size());
-    for (const auto& run : runs) {
-        const auto& history = run["result"]["history"];
-        const sinew::PlotSeries& plotted = series.at(run["strategy"].get<std::string>());
-        REQUIRE(plotted.x.size() == history.size());
-        for (size_t i = 0; i < history.size(); ++i) {
-            CHECK(plotted.x[i] == history[i]["iteration"].get<double>());
-            CHECK(same(plotted.y[i], value_of(history[i][field])));
-        }
-    }
-}
-
-} // namespace
 
 TEST_CASE("sinew compare writes the table, compare.json and PNG and SVG plots of the runs' histories")
 {
     const std::string folder = scratch("compare_plate");
     std::filesystem::remove_all(folder);
     const auto run = run_sinew("compare inextensible-plate --solvers ipopt,kkt-newton,relaxed-kkt,penalty "
-                               "--kappa 1e9,1e11,1e13 --output '" + folder + "'");
+                               "--kappa 1e7,1e8,1e9 --output '" + folder + "'");
     INFO(run.err);
     REQUIRE(run.exit_code == 0);
 
     const std::string table = slurp(folder + "/compare.md");
-    for (const char* label : {"| ipopt |", "| kkt-newton |", "| relaxed-kkt κ=1e9 |", "| relaxed-kkt κ=1e13 |",
-                              "| penalty κ=1e11 |", "reference: kkt-newton"})
+    for (const char* label : {"| ipopt |", "| kkt-newton |", "| relaxed-kkt κ=1e7 |", "| relaxed-kkt κ=1e9 |",
+                              "| penalty κ=1e8 |", "reference: kkt-newton"})
         CHECK(table.find(label) != std::string::npos);
     CHECK(run.out == table.substr(table.find('|')));  // stdout shows the same table
 
@@ -158,38 +119,4 @@ TEST_CASE("sinew compare on the locking block ends every strategy with an honest
         CHECK(r["result"]["status"] != "converged");
         CHECK_FALSE(r["result"]["message"].get<std::string>().empty());
     }
-}
-
-TEST_CASE("sinew compare face-rig fits the face rig by the constrained solvers and the seed's penalty and rotation-vector forms")
-{
-    const std::string folder = scratch("compare_face_rig");
-    std::filesystem::remove_all(folder);
-    const auto run = run_sinew("compare face-rig --rig-tets 1000 --solvers kkt-newton,ipopt,projected-newton "
-                               "--tol 1e-12 --max-iter 30 --output '" + folder + "'");
-    INFO(run.err);
-    REQUIRE(run.exit_code == 0);
-    const std::string table = slurp(folder + "/compare.md");
-    for (const char* label : {"| kkt-newton |", "| ipopt |", "| ipopt (Gauss-Newton) |", "| penalty (seed) |",
-                              "| rotation vectors |", "reference: "})
-        CHECK(table.find(label) != std::string::npos);
-    const nlohmann::json compare = read_json(folder + "/compare.json");
-    const auto& runs = compare["runs"];
-    REQUIRE(runs.size() == 5);
-    // Noise-free targets: every Newton-type strategy reaches the reference's
-    // landmarks (the distance is over landmarks, in m; the face is ~0.25 m
-    // across). At tol 1e-12 a run may stop on the accuracy floor of f (the
-    // inner solves' accuracy) rather than on the tolerance: stalled or
-    // line_search_failed there is a stop at the solution, which the distance
-    // checks; an iteration limit or a failure is not.
-    for (const auto& r : runs) {
-        const std::string strategy = r["strategy"].get<std::string>();
-        INFO(strategy);
-        if (strategy == "ipopt")
-            continue;  // limited-memory: not within 30 iterations
-        const std::string status = r["result"]["status"].get<std::string>();
-        CHECK((status == "converged" || status == "stalled" || status == "line_search_failed"));
-        CHECK(value_of(r["reference_distance"]) < 1e-7);
-    }
-    CHECK(run.err.find("|Mc^T Mc - I| =") != std::string::npos);
-    check_history_plot(folder, "violation", runs, "constraint_violation");
 }
