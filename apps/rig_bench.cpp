@@ -23,17 +23,21 @@ std::string cell(const char* pattern, double value)
     return text;
 }
 
-void print_fit_header(int tets, int nodes, int parameters, const RigTargets& targets)
+void print_fit_header(int tets, int nodes, int parameters, const RigTargets& targets, bool skull_contact)
 {
     std::cout << "\n### Face of " << tets << " tets, " << nodes << " nodes, " << parameters << " parameters, "
-              << (targets.noise > 0.0 ? "1 mm noise" : "exact targets") << " (landmark motion RMS "
+              << (targets.noise > 0.0 ? "1 mm noise" : "exact targets")
+              << (skull_contact ? ", pressed against its skull" : "") << " (landmark motion RMS "
               << cell("%.2f", 1e3 * targets.motion_rms) << " mm)\n\n"
               << "| strategy | status | RMS (mm) | RMS / motion | RMS to exact (mm) | max dα | max dM | max dt (mm) "
-                 "| ‖McᵀMc−I‖ | ‖MjᵀMj−I‖ | outer it | eq. solves | fact. | equilibrium s | sensitivities s | total s |\n"
-              << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+                 "| ‖McᵀMc−I‖ | ‖MjᵀMj−I‖ | outer it | eq. solves | fact. | equilibrium s | sensitivities s | total s "
+                 "| branch (mm) |"
+              << (skull_contact ? " max depth (µm) | skull force (N) |" : "") << "\n"
+              << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+              << (skull_contact ? "---|---|" : "") << "\n";
 }
 
-void print_fit_row(const RigFitOutcome& o, const RigTargets& targets)
+void print_fit_row(const RigFitOutcome& o, const RigTargets& targets, bool skull_contact)
 {
     std::cout << "| " << o.strategy << " | " << to_string(o.result.status) << " | " << cell("%.3g", 1e3 * o.rms)
               << " | " << cell("%.2g", o.rms / targets.motion_rms) << " | " << cell("%.3g", 1e3 * o.rms_to_exact)
@@ -41,14 +45,18 @@ void print_fit_row(const RigFitOutcome& o, const RigTargets& targets)
               << cell("%.2g", 1e3 * o.translation_error) << " | " << cell("%.1e", o.cranium_violation) << " | "
               << cell("%.1e", o.jaw_violation) << " | " << o.result.iterations << " | " << o.equilibrium_solves
               << " | " << o.factorizations << " | " << cell("%.2f", o.equilibrium_seconds) << " | "
-              << cell("%.2f", o.sensitivity_seconds) << " | " << cell("%.2f", o.seconds) << " |\n"
-              << std::flush;
+              << cell("%.2f", o.sensitivity_seconds) << " | " << cell("%.2f", o.seconds) << " | "
+              << cell("%.2g", 1e3 * o.branch_distance) << " |";
+    if (skull_contact)
+        std::cout << " " << cell("%.3g", 1e6 * o.max_penetration) << " | " << cell("%.3g", o.contact_force) << " |";
+    std::cout << "\n" << std::flush;
 }
 
-nlohmann::json outcome_json(const RigFitOutcome& o, int tets, const RigTargets& targets)
+nlohmann::json outcome_json(const RigFitOutcome& o, int tets, const RigTargets& targets, bool skull_contact)
 {
-    return {{"suite", "rig"},
+    nlohmann::json run = {{"suite", "rig"},
             {"tets", tets},
+            {"skull_contact", skull_contact},
             {"noise_m", targets.noise},
             {"strategy", o.strategy},
             {"status", to_string(o.result.status)},
@@ -66,7 +74,11 @@ nlohmann::json outcome_json(const RigFitOutcome& o, int tets, const RigTargets& 
             {"equilibrium_s", number(o.equilibrium_seconds)},
             {"sensitivities_s", number(o.sensitivity_seconds)},
             {"time_s", number(o.seconds)},
+            {"branch_distance_m", number(o.branch_distance)},
             {"result", to_json(o.result)}};
+    if (skull_contact)
+        run["contact"] = {{"max_penetration_m", number(o.max_penetration)}, {"force_n", number(o.contact_force)}};
+    return run;
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start)
@@ -139,24 +151,24 @@ void check_rig_strategies(const std::vector<std::string>& names, const SolverOpt
 }
 
 bool run_rig_bench(const std::vector<int>& sizes, const std::vector<std::string>& solvers,
-                   const SolverOptions& options, nlohmann::json& runs)
+                   const SolverOptions& options, bool skull_contact, nlohmann::json& runs)
 {
     bool all_converged = true;
     std::vector<RigFitCase> exact_cases;
     for (const int tets : sizes) {
         for (const double noise : {0.0, kNoise}) {
-            RigFitCase fit_case = face_fit_case(tets, noise);
+            RigFitCase fit_case = face_fit_case(tets, noise, skull_contact);
             const RigDefinition& definition = fit_case.definition;
             const RigTargets& targets = fit_case.targets;
             print_fit_header(definition.mesh.num_elements(), definition.mesh.num_nodes(),
                              static_cast<int>(definition.muscle_elements.size()) + 2 * RigParameters::kAffineParameters,
-                             targets);
+                             targets, skull_contact);
             for (const RigFitStrategy& strategy : rig_fit_strategies(options)) {
                 if (!chosen(strategy, solvers))
                     continue;
                 const RigFitOutcome outcome = run_rig_fit(definition, fit_case.inner, targets, strategy, {});
-                print_fit_row(outcome, targets);
-                runs.push_back(outcome_json(outcome, definition.mesh.num_elements(), targets));
+                print_fit_row(outcome, targets, skull_contact);
+                runs.push_back(outcome_json(outcome, definition.mesh.num_elements(), targets, skull_contact));
                 all_converged = all_converged && outcome.result.status == Status::converged;
             }
             if (noise == 0.0)

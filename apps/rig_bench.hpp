@@ -15,7 +15,10 @@ namespace sinew::cli {
 /// `solvers` names); one markdown table per size and noise, and a table of what one
 /// outer iteration costs at θ* (equilibrium solve, factorization, forward
 /// sensitivities for every parameter, adjoint gradient). `options`: the
-/// outer solves' tolerance and limits. Every run goes into `runs`. True when
+/// outer solves' tolerance and limits; `skull_contact`: the faces pressed
+/// against their skulls (face_rig), the tables adding the deepest node and
+/// the skull's force. Each fit row ends with its branch check
+/// (RigFitOutcome::branch_distance). Every run goes into `runs`. True when
 /// every fit converged.
 /// Everything run_rig_bench checks before it generates a face: InputError
 /// unless each name is the solver or the label of a strategy of
@@ -24,6 +27,6 @@ namespace sinew::cli {
 void check_rig_strategies(const std::vector<std::string>& names, const SolverOptions& options);
 
 bool run_rig_bench(const std::vector<int>& sizes, const std::vector<std::string>& solvers,
-                   const SolverOptions& options, nlohmann::json& runs);
+                   const SolverOptions& options, bool skull_contact, nlohmann::json& runs);
 
 } // namespace sinew::cli

@@ -15,10 +15,17 @@ struct FaceMaterials {
     double B = 500.0;
     double K = 1e5;
     double sigma_max = 3e4;
+    /// The skull's penalty stiffness ε per node (seed 000 §5.7) as a
+    /// multiple of a node's own stiffness in the tissue, μ h̄ (μ = 2(A + B),
+    /// h̄ the mean edge of the tets): depths stay about this factor below
+    /// the tissue's displacements.
+    double skull_stiffness_factor = 1e3;
 };
 
 /// The rig of `face`: group 0 (tissue) without fibers, one muscle per muscle
-/// group with its elements, the face's cranium and jaw nodes and landmarks.
-RigDefinition face_rig(const FaceMesh& face, const FaceMaterials& materials = {});
+/// group with its elements, the face's cranium and jaw nodes and landmarks;
+/// with `skull_contact`, its skull as a collision body (SurfaceBody, CGAL)
+/// for the face's skull contact nodes.
+RigDefinition face_rig(const FaceMesh& face, const FaceMaterials& materials = {}, bool skull_contact = false);
 
 } // namespace sinew

@@ -33,6 +33,11 @@ void check_definition(const RigDefinition& rig)
     check_nodes(rig.cranium_nodes, nodes, "cranium");
     check_nodes(rig.jaw_nodes, nodes, "jaw");
     check_nodes(rig.landmarks, nodes, "landmark");
+    if (rig.contact) {
+        if (!rig.contact->body)
+            throw InputError("rig: the contact has no body");
+        check_nodes(rig.contact->nodes, nodes, "contact");
+    }
     if (rig.landmarks.empty())
         throw InputError("rig: no landmark");
     if (rig.muscle_names.size() != rig.muscle_elements.size())
@@ -61,7 +66,14 @@ MuscleRig::MuscleRig(RigDefinition definition, EquilibriumSolveSettings settings
     check_definition(definition_);
     validate(settings_.options);
     elastic_ = std::make_shared<ElasticPotential>(definition_.mesh, definition_.group_models);
-    auto potential = std::make_shared<TotalPotential>(std::vector<std::shared_ptr<Potential>>{elastic_});
+    std::vector<std::shared_ptr<Potential>> terms{elastic_};
+    if (const auto& contact = definition_.contact) {
+        contact_ = std::make_shared<ObstaclePenaltyPotential>(
+            kDim, definition_.mesh.num_nodes(), std::make_shared<PlacedBody>(contact->body), contact->stiffness,
+            contact->nodes);
+        terms.push_back(contact_);
+    }
+    auto potential = std::make_shared<TotalPotential>(std::move(terms));
     // Set 0 holds the cranium nodes at rest, set 1 places the jaw nodes (§2.3);
     // QuasistaticProblem refuses a node in both.
     std::vector<DirichletSet> sets{fixed_at_rest("cranium", definition_.cranium_nodes, kDim),
@@ -153,6 +165,18 @@ Eigen::VectorXd MuscleRig::landmark_positions() const
     for (int l = 0; l < num_landmarks(); ++l)
         landmarks.segment<kDim>(kDim * l) = x_hat.segment<kDim>(kDim * definition_.landmarks[l]);
     return landmarks;
+}
+
+double MuscleRig::max_penetration() const
+{
+    require_evaluated();
+    return contact_ ? contact_->max_penetration(equilibrium_) : 0.0;
+}
+
+Eigen::Vector3d MuscleRig::contact_force() const
+{
+    require_evaluated();
+    return contact_ ? contact_->total_force(equilibrium_) : Eigen::Vector3d::Zero();
 }
 
 EquilibriumSensitivities& MuscleRig::sensitivities()

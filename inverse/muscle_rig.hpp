@@ -4,6 +4,7 @@
 // carried by the cranium's affine map; its landmark positions and their
 // derivatives in θ.
 #include "sinew/energies/potentials/elastic_potential.hpp"
+#include "sinew/energies/potentials/obstacle_penalty_potential.hpp"
 #include "sinew/inverse/equilibrium_sensitivities.hpp"
 #include "sinew/inverse/equilibrium_solve.hpp"
 #include "sinew/inverse/rig_parameters.hpp"
@@ -15,6 +16,15 @@
 #include <vector>
 
 namespace sinew {
+
+/// Collisions of the tissue with a rigid body fixed in the cranium frame (the
+/// skull, the teeth), as the seed's penalty force (seed 000 §5.7,
+/// ObstaclePenaltyPotential): E_c = Σ_i ε/2 max(0, −φ(x_i))² over `nodes`.
+struct RigContact {
+    std::shared_ptr<const CollisionBody> body;
+    double stiffness = 0.0;  ///< ε, N/m per node
+    std::vector<int> nodes;  ///< the nodes that can touch the body
+};
 
 /// What a rig is made of: a tet mesh with its group models (the muscles'
 /// groups use a model with an activation, mooney-rivlin-muscle), the
@@ -28,6 +38,7 @@ struct RigDefinition {
     std::vector<int> cranium_nodes;  ///< fixed in the cranium frame
     std::vector<int> jaw_nodes;      ///< placed by the jaw map, x = M_j X + t_j (§2.3)
     std::vector<int> landmarks;      ///< node of each landmark
+    std::optional<RigContact> contact;  ///< none: the tissue passes through bone
 };
 
 /// The outcome of one evaluation of x̂(θ).
@@ -55,6 +66,8 @@ public:
     int num_parameters() const { return num_muscles() + 2 * RigParameters::kAffineParameters; }
     int num_landmarks() const { return static_cast<int>(definition_.landmarks.size()); }
     const RigDefinition& definition() const { return definition_; }
+    /// The inner solves' settings, the force scale filled in.
+    const EquilibriumSolveSettings& settings() const { return settings_; }
     /// The diagonal of the rest mesh's bounding box (m).
     double size() const { return size_; }
 
@@ -74,6 +87,12 @@ public:
     /// wᵀ ∂(S x̂)/∂θ for weights w on the landmarks (3 per landmark) by one
     /// adjoint solve.
     Eigen::VectorXd landmark_gradient(const Eigen::VectorXd& w);
+
+    /// After a successful evaluate(), the largest depth of a node in the
+    /// contact body (m) and the force the body exerts on the tissue (N, in
+    /// the cranium frame); 0 without contact.
+    double max_penetration() const;
+    Eigen::Vector3d contact_force() const;
 
     /// Equilibrium solves and factorizations of sensitivities so far, and their times.
     int equilibrium_solves() const { return equilibrium_solves_; }
@@ -96,6 +115,7 @@ private:
     RigDefinition definition_;
     EquilibriumSolveSettings settings_;
     std::shared_ptr<ElasticPotential> elastic_;
+    std::shared_ptr<ObstaclePenaltyPotential> contact_;  ///< null without contact
     std::unique_ptr<QuasistaticProblem> problem_;
     double size_ = 1.0;
     std::optional<Eigen::VectorXd> last_theta_;

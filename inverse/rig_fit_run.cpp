@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <cmath>
 #include <random>
@@ -106,6 +107,19 @@ Result fit(Nlp& nlp, RigFitProblem& affine,
     return result;
 }
 
+/// max_i |x̂_i − x̂_rest,i| at θ, `rig` solved at θ by the fit's warm starts
+/// and a fresh rig of the same definition from rest; ∞ when either fails.
+double branch_distance(MuscleRig& rig, const RigParameters& theta)
+{
+    const RigEvaluation warm = rig.evaluate(theta);
+    MuscleRig fresh(rig.definition(), rig.settings());
+    const RigEvaluation cold = fresh.evaluate(theta);
+    if (!warm.ok || !cold.ok)
+        return std::numeric_limits<double>::infinity();
+    const Eigen::VectorXd difference = rig.positions() - fresh.positions();
+    return Eigen::Map<const Eigen::Matrix3Xd>(difference.data(), 3, difference.size() / 3).colwise().norm().maxCoeff();
+}
+
 } // namespace
 
 RigFitOutcome run_rig_fit(const RigDefinition& definition, const EquilibriumSolveSettings& inner,
@@ -152,19 +166,23 @@ RigFitOutcome run_rig_fit(const RigDefinition& definition, const EquilibriumSolv
         outcome.landmarks = fitted_landmarks;
         outcome.rms = std::sqrt((fitted_landmarks - targets.targets).squaredNorm() / landmarks);
         outcome.rms_to_exact = std::sqrt((fitted_landmarks - targets.exact).squaredNorm() / landmarks);
+        outcome.max_penetration = rig.max_penetration();
+        outcome.contact_force = rig.contact_force().norm();
+        outcome.branch_distance = branch_distance(rig, fitted);
     } else {
         outcome.rms = outcome.rms_to_exact = std::numeric_limits<double>::infinity();
+        outcome.branch_distance = std::numeric_limits<double>::infinity();
     }
     return outcome;
 }
 
-RigFitCase face_fit_case(int tets, double noise)
+RigFitCase face_fit_case(int tets, double noise, bool skull_contact)
 {
     FaceShape shape;
     shape.target_tets = tets;
     const FaceMesh face = generate_face(shape);
     RigFitCase fit_case;
-    fit_case.definition = face_rig(face);
+    fit_case.definition = face_rig(face, {}, skull_contact);
     // f = ½‖S x(θ) − x*‖² is known only to |rᵀ S δx| with δx ≈ H⁻¹ r_in
     // (r_in the inner residual): first order in δx wherever the residual r
     // is not zero. The outer line searches measure decreases of f down to

@@ -76,6 +76,16 @@ struct RigFitOutcome {
     double sensitivity_seconds = 0.0;
     double seconds = 0.0;
     Eigen::VectorXd landmarks;     ///< S x̂(θ) at the end (3 per landmark); empty where the rig fails there
+    /// The branch check: max over nodes of |x̂(θ) − x̂_rest(θ)| (m) at the
+    /// fitted θ, x̂ the equilibrium the fit's warm-started inner solves
+    /// reached, x̂_rest the one a fresh rig solves from rest. Far from 0 when
+    /// the fit followed the tissue into another of its equilibria; infinite
+    /// where either solve fails.
+    double branch_distance = 0.0;
+    /// With contact: the deepest node in the body (m) and |force| of the body
+    /// on the tissue (N) at the fitted θ.
+    double max_penetration = 0.0;
+    double contact_force = 0.0;
 };
 
 /// A fitting case on a generated face: its rig, the inner solves' settings
@@ -86,12 +96,13 @@ struct RigFitCase {
     RigTargets targets;
 };
 
-/// The face of about `tets` tets (generate_face, face_rig), inner solves to
-/// 1e-12 of the force scale (at most 100 Newton iterations), targets from
+/// The face of about `tets` tets (generate_face, face_rig; with its skull
+/// as a collision body when `skull_contact`), inner solves to 1e-12 of the
+/// force scale (at most 100 Newton iterations), targets from
 /// synthesize_targets with `noise` (m) and seed 1: the case of `sinew bench
 /// --suite rig` and `sinew compare face-rig`. InputError for a size
 /// generate_face refuses.
-RigFitCase face_fit_case(int tets, double noise);
+RigFitCase face_fit_case(int tets, double noise, bool skull_contact = false);
 
 /// Fits a fresh rig of `definition` (so every strategy starts alike: from
 /// the neutral rig, cold) to `targets` with `strategy`. Where the landmarks

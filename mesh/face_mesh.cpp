@@ -1,6 +1,8 @@
 #include "sinew/mesh/face_mesh.hpp"
 
 #include "sinew/core/input_error.hpp"
+#include "sinew/mesh/face_geometry.hpp"
+#include "sinew/mesh/face_skull.hpp"
 #include "sinew/mesh/tetrahedralize_surface.hpp"
 
 #include <algorithm>
@@ -23,43 +25,6 @@ constexpr int kMinMuscleElements = 4;
 /// Accepted |tets/target − 1| before the volume bound is recalibrated.
 constexpr double kTetCountSlack = 0.25;
 
-/// The outer surface as a height field, its slope, and the thickness coordinate w.
-struct FaceGeometry {
-    FaceShape shape;
-
-    double root(double x, double y) const
-    {
-        return std::sqrt(std::max(0.0, 1.0 - x * x / (shape.a * shape.a) - y * y / (shape.b * shape.b)));
-    }
-    /// z of the outer surface over (x, y).
-    double outer_z(double x, double y) const { return shape.c * root(x, y); }
-    /// The point at (x, y) and thickness fraction w ∈ [0, 1] (0 inner, 1 outer).
-    Eigen::Vector3d point(double x, double y, double w) const
-    {
-        return {x, y, outer_z(x, y) - (1.0 - w) * shape.thickness};
-    }
-    double thickness_fraction(const Eigen::Vector3d& p) const
-    {
-        return 1.0 - (outer_z(p.x(), p.y()) - p.z()) / shape.thickness;
-    }
-    /// A direction (dx, dy) of the plane lifted onto the outer surface's tangent plane, unit.
-    Eigen::Vector3d tangent(double x, double y, const Eigen::Vector2d& d) const
-    {
-        const double s = std::max(root(x, y), 1e-6);
-        const double zx = -shape.c * x / (shape.a * shape.a * s), zy = -shape.c * y / (shape.b * shape.b * s);
-        return Eigen::Vector3d(d.x(), d.y(), zx * d.x() + zy * d.y()).normalized();
-    }
-    bool inside_face(double x, double y) const
-    {
-        return x * x / (shape.a * shape.a) + y * y / (shape.b * shape.b) <= shape.rho * shape.rho;
-    }
-    bool inside_mouth(double x, double y, double margin = 0.0) const
-    {
-        const double u = x / (shape.mouth_half_width + margin), v = (y - shape.mouth_y) / (shape.mouth_half_height + margin);
-        return u * u + v * v <= 1.0;
-    }
-};
-
 void check_shape(const FaceShape& s)
 {
     const auto positive = [](double value, const char* name) {
@@ -74,6 +39,8 @@ void check_shape(const FaceShape& s)
     positive(s.mouth_half_height, "mouth_half_height");
     if (!(s.rho > 0.0 && s.rho < 1.0))
         throw InputError(std::string(kSource) + ": rho must be in (0, 1)");
+    if (!(s.skull_gap >= 0.0 && s.skull_gap <= s.thickness))
+        throw InputError(std::string(kSource) + ": skull_gap must be in [0, thickness]");
     if (!(s.thickness < 0.5 * s.c))
         throw InputError(std::string(kSource) + ": thickness must be below half the depth c");
     FaceGeometry g{s};
@@ -292,17 +259,18 @@ void assign_muscles(const FaceGeometry& g, FaceMesh& face)
 void select_nodes(const FaceGeometry& g, const std::vector<int>& layer_of, int layers, FaceMesh& face)
 {
     const FaceShape& s = g.shape;
-    const double jaw_top = s.mouth_y - 0.012, cranium_bottom = s.mouth_y + 0.02, jaw_half_width = 0.05;
+    const double jaw_top = g.jaw_top(), cranium_bottom = g.cranium_bottom(), jaw_half_width = g.jaw_half_width();
     std::vector<int> outer;
     for (int n = 0; n < static_cast<int>(layer_of.size()); ++n) {
         const Eigen::Vector3d X = face.mesh.nodes.col(n);
-        if (layer_of[n] == 0) {
-            if (X.y() > cranium_bottom)
-                face.cranium_nodes.push_back(n);
-            else if (X.y() < jaw_top && std::abs(X.x()) < jaw_half_width)
-                face.jaw_nodes.push_back(n);
-        } else if (layer_of[n] == layers) {
+        if (layer_of[n] == layers) {
             outer.push_back(n);
+        } else if (layer_of[n] == 0 && X.y() > cranium_bottom) {
+            face.cranium_nodes.push_back(n);
+        } else if (layer_of[n] == 0 && X.y() < jaw_top && std::abs(X.x()) < jaw_half_width) {
+            face.jaw_nodes.push_back(n);
+        } else {
+            face.skull_contact_nodes.push_back(n);
         }
     }
     std::set<int> chosen;
@@ -353,6 +321,7 @@ FaceMesh generate_face(const FaceShape& shape)
             throw InputError(std::string(kSource) + ": TetGen moved surface node " + std::to_string(n));
     assign_muscles(g, face);
     select_nodes(g, layer_of, layers, face);
+    face.skull = face_skull(g, 0.5 * spacing);
     face.hinge_point = Eigen::Vector3d(0.0, shape.mouth_y + 0.04, -0.02);
     return face;
 }

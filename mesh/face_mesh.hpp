@@ -23,6 +23,7 @@ struct FaceShape {
     double mouth_half_width = 0.024;
     double mouth_half_height = 0.0045;
     int target_tets = 20000;   ///< the tet count aimed at (TetGen's volume bound is calibrated to it)
+    double skull_gap = 0.0005; ///< the skull's distance below the inner surface of the lips and cheeks
 };
 
 /// The generated face: tets with groups ("tissue", then one group per
@@ -38,6 +39,12 @@ struct FaceMesh {
     std::vector<int> jaw_nodes;
     /// Outer-surface nodes the fit sees (one per landmark, distinct).
     std::vector<int> landmarks;
+    /// The maxilla and upper teeth under the lips and cheeks (face_skull), a
+    /// closed triangle surface in the cranium frame, and the nodes that can
+    /// touch it: the tissue's surface nodes below the outer surface (its
+    /// inner surface, the rim's and the mouth's walls) attached to no bone.
+    Mesh skull;
+    std::vector<int> skull_contact_nodes;
     /// A point on the jaw's hinge axis, which runs along x (m).
     Eigen::Vector3d hinge_point = Eigen::Vector3d::Zero();
 };
@@ -55,10 +62,12 @@ struct FaceMesh {
 /// sides, mentalis (chin), frontalis (forehead) on both sides. Inner-surface
 /// nodes: below the mouth and within the mandible's width to the jaw, the
 /// others above y = mouth_y + 0.025 to the cranium, the rest (lips and
-/// cheeks) free. Landmarks: the outer-surface node nearest each point of a
+/// cheeks) free; the skull (face_skull) under them, cells of half the
+/// tets' spacing. Landmarks: the outer-surface node nearest each point of a
 /// 9 × 11 grid over the face, less those in or next to the mouth; at least 40.
 /// InputError for a shape out of range (each size positive, ρ in (0, 1), the
-/// mouth inside the face, target_tets in [1000, 2·10⁶]).
+/// mouth inside the face, target_tets in [1000, 2·10⁶], skull_gap in
+/// [0, thickness]).
 FaceMesh generate_face(const FaceShape& shape);
 
 } // namespace sinew

@@ -2,12 +2,15 @@
 // A small rig for the inverse tests: a tissue slab of tets whose bottom face is
 // attached half to the cranium, half (and a strip of one side) to the jaw, with two muscles of
 // different fiber directions, and landmarks on the top face.
+#include "sinew/bodies/analytic_obstacle.hpp"
 #include "sinew/energies/potentials/element_model.hpp"
+#include "sinew/inverse/rig_fit_run.hpp"
 #include "sinew/inverse/muscle_rig.hpp"
 #include "sinew/mesh/box_tets.hpp"
 #include "sinew/problems/nlp.hpp"
 
 #include <Eigen/Geometry>
+#include <catch2/catch.hpp>
 
 #include <cmath>
 
@@ -62,6 +65,22 @@ inline EquilibriumSolveSettings tight_settings()
     return settings;
 }
 
+/// The slab pressed by a rigid ball fixed in the cranium frame, 1 mm into its
+/// top face at rest (seed 000 §5.7's penalty on the top nodes, ε = 10³ μ h,
+/// μ = 2(A + B) = 3000 Pa, h = 1 cm).
+inline RigDefinition slab_rig_pressed_by_ball()
+{
+    RigDefinition definition = slab_rig();
+    const double radius = 0.02, top = 0.015;
+    const AnalyticObstacle ball = SphereObstacle{Eigen::Vector3d(0.02, 0.015, top + radius - 0.001), radius};
+    std::vector<int> top_nodes;
+    for (int n = 0; n < definition.mesh.num_nodes(); ++n)
+        if (definition.mesh.nodes(2, n) == top)
+            top_nodes.push_back(n);
+    definition.contact = RigContact{analytic_body(ball, 3), 1e3 * 3000.0 * 0.01, top_nodes};
+    return definition;
+}
+
 /// A rig state away from rest: activations inside (0, 1), the jaw turned by
 /// `jaw_degrees` about the x axis through the bottom face's front edge and
 /// moved, the cranium slightly turned and moved.
@@ -75,6 +94,18 @@ inline RigParameters moved_parameters(double jaw_degrees)
     theta.cranium_map = Eigen::AngleAxisd(0.05, Eigen::Vector3d(0.3, 1.0, 0.2).normalized()).toRotationMatrix();
     theta.cranium_translation = Eigen::Vector3d(0.002, 0.001, -0.003);
     return theta;
+}
+
+/// Targets of the rig at θ* (no noise), for run_rig_fit.
+inline RigTargets targets_at(const RigDefinition& definition, const RigParameters& truth)
+{
+    MuscleRig rig(definition, tight_settings());
+    REQUIRE(rig.evaluate(truth).ok);
+    RigTargets targets;
+    targets.truth = truth;
+    targets.exact = targets.targets = rig.landmark_positions();
+    targets.motion_rms = 1.0;
+    return targets;
 }
 
 /// Central differences of a fit's objective, step h in every variable: each

@@ -52,6 +52,39 @@ TEST_CASE("rig: landmark sensitivities match central differences of re-solves fo
     }
 }
 
+TEST_CASE("rig with contact: landmark sensitivities match central differences of re-solves while a ball presses in",
+          "[inverse][rig][sensitivities][contact]")
+{
+    // The equilibrium's Hessian holds the contact term ε(∇φ∇φᵀ − δ∇²φ) of
+    // the touching nodes.
+    const RigDefinition definition = slab_rig_pressed_by_ball();
+    MuscleRig rig(definition, tight_settings());
+    MuscleRig free_rig(slab_rig(), tight_settings());
+    const RigParameters theta = moved_parameters(8.0);
+    REQUIRE(rig.evaluate(theta).ok);
+    REQUIRE(free_rig.evaluate(theta).ok);
+    CAPTURE(rig.max_penetration(), rig.contact_force().transpose());
+    REQUIRE(rig.max_penetration() > 0.0);
+    CHECK(rig.max_penetration() < 1e-4);  // the ball's 1 mm mostly pushed out
+    CHECK(rig.contact_force().z() < 0.0);  // the ball pushes the top face down
+    const Eigen::MatrixXd J = rig.landmark_jacobian();
+    // Contact changes the sensitivities: the test below sees its term.
+    CHECK((J - free_rig.landmark_jacobian()).norm() > 1e-3 * J.norm());
+    for (int k = 0; k < theta.size(); ++k) {
+        CAPTURE(k);
+        // The contact's stiffness makes x(θ) curve fast (the central
+        // differences' O(h²) error is 4e-6 at h = 1e-5 for the jaw's
+        // translation, falling as h²): Richardson's extrapolation of h and
+        // h/2 cancels it.
+        const double h = k < theta.num_muscles() ? 1e-4 : 1e-5;
+        const Eigen::VectorXd coarse = landmark_difference(rig, theta, k, h);
+        const Eigen::VectorXd fine = landmark_difference(rig, theta, k, 0.5 * h);
+        const Eigen::VectorXd differences = (4.0 * fine - coarse) / 3.0;
+        REQUIRE(differences.norm() > 0.0);
+        CHECK((J.col(k) - differences).norm() <= 1e-6 * differences.norm());
+    }
+}
+
 TEST_CASE("rig: the adjoint gradient equals the forward sensitivities applied to the weights",
           "[inverse][rig][sensitivities]")
 {

@@ -171,6 +171,34 @@ TEST_CASE("rig fit: noise-free targets are recovered by ipopt and by kkt-newton 
     }
 }
 
+TEST_CASE("rig fit run: kkt-newton recovers theta* with and without a ball pressing in, on the branch solved from rest",
+          "[inverse][rig][fit][contact]")
+{
+    SolverOptions options;
+    options.tolerance = 1e-14;
+    options.max_iterations = 200;
+    for (const bool pressed : {false, true}) {
+        CAPTURE(pressed);
+        const RigDefinition definition = pressed ? slab_rig_pressed_by_ball() : slab_rig();
+        const RigFitOutcome outcome =
+            run_rig_fit(definition, tight_settings(), targets_at(definition, moved_parameters(8.0)),
+                        {"kkt-newton", "kkt-newton", OrthogonalityForm::constraints, options}, {});
+        CAPTURE(to_string(outcome.result.status), outcome.result.message, outcome.rms, outcome.activation_error);
+        CHECK(outcome.activation_error <= 1e-5);
+        CHECK(outcome.rms <= 1e-9);
+        // The fit's warm-started equilibrium is the one solved from rest.
+        CHECK(outcome.branch_distance <= 1e-9);
+        if (pressed) {
+            CHECK(outcome.max_penetration > 0.0);
+            CHECK(outcome.max_penetration < 1e-4);
+            CHECK(outcome.contact_force > 0.1);
+        } else {
+            CHECK(outcome.max_penetration == 0.0);
+            CHECK(outcome.contact_force == 0.0);
+        }
+    }
+}
+
 TEST_CASE("rig fit: the objective gradient matches central differences of re-solves in both orthogonality forms",
           "[inverse][rig][fit]")
 {

@@ -8,22 +8,6 @@
 using namespace sinew;
 using namespace sinew::test;
 
-namespace {
-
-/// Targets of the rig at θ* (no noise), for run_rig_fit.
-RigTargets targets_at(const RigDefinition& definition, const RigParameters& truth)
-{
-    MuscleRig rig(definition, tight_settings());
-    REQUIRE(rig.evaluate(truth).ok);
-    RigTargets targets;
-    targets.truth = truth;
-    targets.exact = targets.targets = rig.landmark_positions();
-    targets.motion_rms = 1.0;
-    return targets;
-}
-
-} // namespace
-
 TEST_CASE("rig identifiability: the slab's top-face landmarks determine all parameters", "[inverse][rig][identifiability]")
 {
     MuscleRig rig(slab_rig(), tight_settings());

@@ -1,3 +1,4 @@
+#include "sinew/bodies/surface_body.hpp"
 #include "sinew/core/input_error.hpp"
 #include "sinew/mesh/element_geometry.hpp"
 #include "sinew/mesh/face_mesh.hpp"
@@ -69,6 +70,45 @@ TEST_CASE("face generator: a valid shell of about the asked size with muscles, a
     }
 }
 
+TEST_CASE("face generator: the skull lies the gap below the free tissue, which touches it nowhere at rest",
+          "[mesh][face][contact]")
+{
+    FaceShape shape;
+    shape.target_tets = 4000;
+    shape.skull_gap = 0.001;
+    const FaceMesh face = generate_face(shape);
+    // A closed, oriented, self-intersection-free surface: SurfaceBody refuses anything else.
+    const SurfaceBody skull(face.skull, "skull");
+    std::set<int> attached(face.cranium_nodes.begin(), face.cranium_nodes.end());
+    attached.insert(face.jaw_nodes.begin(), face.jaw_nodes.end());
+    REQUIRE(face.skull_contact_nodes.size() > 50);
+    int over_the_skull = 0;
+    for (const int n : face.skull_contact_nodes) {
+        CAPTURE(n);
+        CHECK(attached.count(n) == 0);
+        const Eigen::Vector3d X = face.mesh.nodes.col(n);
+        const SurfaceDistance d = skull.query(X);
+        CHECK(d.distance > 0.0);
+        // A node of the inner surface over the skull's top sees it the gap
+        // below along z: at the distance gap·n_z along the top's normal n,
+        // plus the facets' sag (cells of half the tets' spacing; the top is a
+        // dome, its chords lie below it, so the sag only widens the gap).
+        const double inner_z =
+            shape.c * std::sqrt(1.0 - std::pow(X.x() / shape.a, 2) - std::pow(X.y() / shape.b, 2)) - shape.thickness;
+        const bool inner = std::abs(X.z() - inner_z) < 1e-9;
+        if (inner && d.feature == SurfaceFeature::face && d.gradient.z() > 0.5 && X.y() > skull.lower().y() &&
+            X.y() < skull.upper().y()) {
+            ++over_the_skull;
+            CHECK(d.distance >= 0.95 * shape.skull_gap * d.gradient.z());
+            CHECK(d.distance <= shape.skull_gap * d.gradient.z() + 0.15 * shape.skull_gap);
+        }
+    }
+    CHECK(over_the_skull > 20);
+    // The cranium's attachment is above the skull's top too: bone under tissue, not in it.
+    for (const int n : face.cranium_nodes)
+        CHECK(skull.query(face.mesh.nodes.col(n)).distance > 0.0);
+}
+
 TEST_CASE("face generator: shapes out of range are refused", "[mesh][face][errors]")
 {
     FaceShape shape;
@@ -83,4 +123,10 @@ TEST_CASE("face generator: shapes out of range are refused", "[mesh][face][error
     shape = FaceShape{};
     shape.thickness = std::numeric_limits<double>::quiet_NaN();
     CHECK_THROWS_AS(generate_face(shape), InputError);
+    for (const double gap : {-1e-3, 0.02, std::numeric_limits<double>::infinity()}) {
+        CAPTURE(gap);
+        shape = FaceShape{};
+        shape.skull_gap = gap;
+        CHECK_THROWS_AS(generate_face(shape), InputError);
+    }
 }
