@@ -298,17 +298,45 @@ void select_nodes(const FaceGeometry& g, const std::vector<int>& layer_of, int l
         throw InputError(std::string(kSource) + ": no inner-surface node attached to the cranium or the jaw");
 }
 
+/// The shell's volume t·(area of the trimmed ellipse − mouth).
+double shell_volume(const FaceShape& shape)
+{
+    return shape.thickness * M_PI *
+           (shape.a * shape.b * shape.rho * shape.rho - shape.mouth_half_width * shape.mouth_half_height);
+}
+
+/// The tets' spacing: a regular tet of edge h has volume h³/(6√2), so
+/// h = (6√2 V/N)^(1/3) for N tets.
+double tet_spacing(const FaceShape& shape)
+{
+    return std::cbrt(6.0 * std::sqrt(2.0) * shell_volume(shape) / shape.target_tets);
+}
+
+/// Named node sets of the face's mesh, each sorted.
+void name_node_sets(FaceMesh& face)
+{
+    std::vector<int> landmarks = face.landmarks;
+    std::sort(landmarks.begin(), landmarks.end());
+    face.mesh.node_sets = {{"cranium", face.cranium_nodes},
+                           {"jaw", face.jaw_nodes},
+                           {"skull_contact", face.skull_contact_nodes},
+                           {"landmarks", landmarks}};
+}
+
 } // namespace
+
+Mesh generate_face_skull(const FaceShape& shape)
+{
+    check_shape(shape);
+    return face_skull(FaceGeometry{shape}, 0.5 * tet_spacing(shape));
+}
 
 FaceMesh generate_face(const FaceShape& shape)
 {
     check_shape(shape);
     const FaceGeometry g{shape};
-    // Shell volume t·(area of the trimmed ellipse − mouth); a regular tet of
-    // edge h has volume h³/(6√2), so h = (6√2 V/N)^(1/3) for N tets.
-    const double volume = shape.thickness * M_PI * (shape.a * shape.b * shape.rho * shape.rho -
-                                                    shape.mouth_half_width * shape.mouth_half_height);
-    const double spacing = std::cbrt(6.0 * std::sqrt(2.0) * volume / shape.target_tets);
+    const double volume = shell_volume(shape);
+    const double spacing = tet_spacing(shape);
     const int layers = std::max(2, static_cast<int>(std::lround(shape.thickness / spacing)));
     std::vector<int> layer_of;
     const Mesh surface = shell_surface(g, cell_grid(g, spacing), layers, layer_of);
@@ -322,6 +350,7 @@ FaceMesh generate_face(const FaceShape& shape)
     assign_muscles(g, face);
     select_nodes(g, layer_of, layers, face);
     face.skull = face_skull(g, 0.5 * spacing);
+    name_node_sets(face);
     face.hinge_point = Eigen::Vector3d(0.0, shape.mouth_y + 0.04, -0.02);
     return face;
 }

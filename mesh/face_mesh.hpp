@@ -67,7 +67,12 @@ struct FaceMesh {
 /// 9 × 11 grid over the face, less those in or next to the mouth; at least 40.
 /// InputError for a shape out of range (each size positive, ρ in (0, 1), the
 /// mouth inside the face, target_tets in [1000, 2·10⁶], skull_gap in
-/// [0, thickness]).
+/// [0, thickness]). The mesh names its node sets "cranium", "jaw",
+/// "skull_contact" and "landmarks" (Mesh::node_sets).
 FaceMesh generate_face(const FaceShape& shape);
+
+/// The skull generate_face(shape) gives (FaceMesh::skull), without the
+/// tets; the same InputErrors.
+Mesh generate_face_skull(const FaceShape& shape);
 
 } // namespace sinew

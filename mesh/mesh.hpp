@@ -2,6 +2,7 @@
 #include <Eigen/Core>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sinew {
@@ -40,6 +41,9 @@ struct Mesh {
     /// num_elements, unit columns), from a generator that defines one; empty
     /// otherwise.
     Eigen::MatrixXd element_fibers;
+    /// Named sets of nodes a generator defines (the face's bone attachments
+    /// and skull contact nodes), each sorted and unique; empty otherwise.
+    std::vector<std::pair<std::string, std::vector<int>>> node_sets;
 
     int num_nodes() const { return static_cast<int>(nodes.cols()); }
     int num_elements() const { return static_cast<int>(elements.cols()); }

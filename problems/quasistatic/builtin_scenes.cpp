@@ -26,7 +26,8 @@ std::vector<BuiltinProblem> quasistatic_scenes()
         {"cantilever-6k-release", "dynamics"},      {"curtain-swing", "dynamics"},
         {"spinning-block", "dynamics"},             {"helical-block-release", "dynamics"},
         {"hertz-sphere", "contact"},               {"block-on-sphere", "contact"},
-        {"block-on-sphere-vdb", "contact"}};
+        {"block-on-sphere-vdb", "contact"},        {"face-on-skull", "contact"},
+        {"face-on-skull-gaps", "contact"}};
     std::vector<BuiltinProblem> out;
     for (const auto& [name, suite] : scenes) {
         // The description is read from the file once, here; make() reads it again.

@@ -102,6 +102,18 @@ std::vector<int> select(const Mesh& mesh, const NodesOfGroup& of_group, double)
     return out;
 }
 
+std::vector<int> select(const Mesh& mesh, const NodesOfSet& of_set, double)
+{
+    std::string names;
+    for (const auto& [name, nodes] : mesh.node_sets) {
+        if (name == of_set.name)
+            return nodes;
+        names += (names.empty() ? "" : ", ") + name;
+    }
+    throw InputError("the mesh has no node set '" + of_set.name + "'" +
+                     (names.empty() ? std::string("; it has none") : "; its node sets: " + names));
+}
+
 } // namespace
 
 std::vector<int> select_nodes(const Mesh& mesh, const NodeSelection& selection, double tolerance)

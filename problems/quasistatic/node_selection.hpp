@@ -32,15 +32,21 @@ struct NodesOfGroup {
     std::string group;
 };
 
+/// The nodes of a set the mesh's generator named (Mesh::node_sets).
+struct NodesOfSet {
+    std::string name;
+};
+
 /// How a scene picks nodes for a boundary condition or a load: by index or by
 /// a geometric predicate on the rest positions.
-using NodeSelection = std::variant<AllNodes, NodeList, NodesInBox, NodesOnPlane, NodesInHalfSpace, NodesOfGroup>;
+using NodeSelection = std::variant<AllNodes, NodeList, NodesInBox, NodesOnPlane, NodesInHalfSpace, NodesOfGroup,
+                                   NodesOfSet>;
 
 /// The selected nodes, sorted and unique. Geometric predicates hold within
 /// `tolerance` (m; scenes use 1e-9 × the mesh's bounding-box diagonal) so that
 /// nodes exactly on a face are caught. InputError for a node index out of
 /// range or listed twice, vectors of the wrong dimension, a zero normal, an
-/// unknown group, or a selection that picks no node.
+/// unknown group or node set, or a selection that picks no node.
 std::vector<int> select_nodes(const Mesh& mesh, const NodeSelection& selection, double tolerance);
 
 } // namespace sinew

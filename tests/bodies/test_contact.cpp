@@ -7,18 +7,22 @@
 #include "sinew/energies/constraints/body_gaps.hpp"
 #include "sinew/energies/potentials/obstacle_penalty_potential.hpp"
 #include "sinew/energies/potentials/total_potential.hpp"
+#include "sinew/mesh/face_mesh.hpp"
 #include "sinew/mesh/icosphere.hpp"
 #include "sinew/problems/derivative_check.hpp"
 #include "sinew/problems/quasistatic/scene_reader.hpp"
 #include "sinew/runs/refreshed_solve.hpp"
+#include "sinew/solvers/solver.hpp"
 
 #include "bodies/body_surfaces.hpp"
 #include "potentials/potential_checks.hpp"
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <Eigen/Geometry>
 
+#include <fstream>
 #include <random>
 
 using namespace sinew;
@@ -230,4 +234,38 @@ TEST_CASE("the contact candidate set is refreshed between solves: margin 0 gives
     REQUIRE(tight.result.status == Status::converged);
     CHECK(tight.result.statistics.at("constraint_rounds") >= 1);
     CHECK((tight.positions - wide.positions).cwiseAbs().maxCoeff() < 1e-7);
+}
+
+TEST_CASE("the face pressed against its skull: its lips enter the bone without the skull and stay out with it")
+{
+    // Scene face-on-skull, solved as it is and without its "bodies": the
+    // contracting muscles press the lips and cheeks into the maxilla and
+    // upper teeth 0.5 mm below them, which the seed's penalty holds them off.
+    std::ifstream file(std::string(SINEW_SOURCE_DIR) + "/scenes/face-on-skull.json");
+    const nlohmann::json scene_json = nlohmann::json::parse(file);
+    FaceShape shape;
+    shape.target_tets = scene_json["mesh"]["target_tets"].get<int>();
+    const SurfaceBody skull(generate_face_skull(shape), "skull");
+    double depth_with = 0.0, depth_without = 0.0;
+    for (const bool with_skull : {false, true}) {
+        CAPTURE(with_skull);
+        nlohmann::json text = scene_json;
+        if (!with_skull)
+            text.erase("bodies");
+        Scene scene = parse_scene(text.dump(), "face-on-skull.json");
+        scene.apply_load_factor(1.0);
+        const Result result = solve(*scene.problem, "projected-newton", SolverOptions{});
+        REQUIRE(result.status == Status::converged);
+        const Eigen::VectorXd x = scene.problem->full_configuration(result.x);
+        const auto& sets = scene.mesh.node_sets;
+        const auto contact = std::find_if(sets.begin(), sets.end(), [](const auto& s) { return s.first == "skull_contact"; });
+        REQUIRE(contact != sets.end());
+        double deepest = 0.0;
+        for (const int node : contact->second)
+            deepest = std::max(deepest, -skull.query(x.segment<3>(3 * node)).distance);
+        (with_skull ? depth_with : depth_without) = deepest;
+    }
+    CAPTURE(depth_with, depth_without);
+    CHECK(depth_without > 1e-4);           // more than 0.1 mm into the bone
+    CHECK(depth_with < 0.05 * depth_without);  // held off, to the penalty's depth
 }

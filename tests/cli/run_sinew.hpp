@@ -15,11 +15,13 @@
 namespace sinew::test {
 
 /// The built-in scenes whose `sinew check` takes over a second in Release
-/// (8 s for helical-block-6k, minutes under the sanitizers): cli_study_tests
-/// checks them, cli_tests every other problem and scene.
+/// (8 s for helical-block-6k, 53 s for face-on-skull, whose dense check
+/// compares 5·10⁶ Hessian entries; minutes under the sanitizers):
+/// cli_study_tests checks them, cli_tests every other problem and scene.
 inline const std::set<std::string> kSlowestChecks = {
-    "helical-block-6k", "helical-block-3k",   "spindle-contraction", "muscle-spindle",
-    "block-on-sphere",  "block-on-sphere-vdb", "cantilever-206k",     "twisted-cantilever-206k"};
+    "helical-block-6k", "helical-block-3k",    "spindle-contraction", "muscle-spindle",
+    "block-on-sphere",  "block-on-sphere-vdb", "cantilever-206k",     "twisted-cantilever-206k",
+    "face-on-skull",    "face-on-skull-gaps"};
 
 struct Run {
     int exit_code = -1;

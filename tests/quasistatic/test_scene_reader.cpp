@@ -221,8 +221,8 @@ TEST_CASE("every built-in scene file parses")
             continue;  // large: built by the bench, same format as their 6k siblings
         CHECK_NOTHROW(parse_scene(file.text, file.name));
     }
-    // 18 quasistatic scenes of scenes/ (3 of them contact) and 5 stepped in time of scenes/dynamics/
-    CHECK(builtin_scene_files().size() == 23);
+    // 20 quasistatic scenes of scenes/ (5 of them contact) and 5 stepped in time of scenes/dynamics/
+    CHECK(builtin_scene_files().size() == 25);
     CHECK(std::count_if(builtin_scene_files().begin(), builtin_scene_files().end(),
                         [](const auto& file) { return file.dynamic; }) == 5);
 }

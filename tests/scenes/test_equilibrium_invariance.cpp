@@ -33,3 +33,5 @@ TEST_CASE("helical-block-6k reaches its recorded equilibrium") { check_recorded_
 TEST_CASE("hertz-sphere reaches its recorded equilibrium") { check_recorded_equilibrium("hertz-sphere"); }
 TEST_CASE("block-on-sphere reaches its recorded equilibrium") { check_recorded_equilibrium("block-on-sphere"); }
 TEST_CASE("block-on-sphere-vdb reaches its recorded equilibrium") { check_recorded_equilibrium("block-on-sphere-vdb"); }
+TEST_CASE("face-on-skull reaches its recorded equilibrium") { check_recorded_equilibrium("face-on-skull"); }
+TEST_CASE("face-on-skull-gaps reaches its recorded equilibrium") { check_recorded_equilibrium("face-on-skull-gaps"); }

@@ -7,6 +7,7 @@
 #include "sinew/core/format_number.hpp"
 #include "sinew/energies/constraints/body_gaps.hpp"
 #include "sinew/energies/potentials/obstacle_penalty_potential.hpp"
+#include "sinew/mesh/face_mesh.hpp"
 #include "sinew/mesh/icosphere.hpp"
 #include "sinew/mesh/obj_reader.hpp"
 
@@ -32,18 +33,25 @@ Eigen::Vector3d embedded(const Eigen::VectorXd& v)
     return out;
 }
 
-/// A closed triangle surface and its name: an OBJ file (string) or
-/// {generator: icosphere, center, radius, subdivisions}.
+/// A closed triangle surface and its name: an OBJ file (string),
+/// {generator: icosphere, center, radius, subdivisions} or {generator:
+/// face-skull, target_tets, skull_gap} (the skull of the face mesh of the
+/// same numbers).
 std::pair<Mesh, std::string> surface_mesh(const JsonCursor& s, const std::string& base_folder)
 {
     if (!s.is_object()) {
         const std::string path = resolve_path(s.string(), base_folder);
         return {at_place(s, [&] { return read_obj(path); }), path};
     }
-    s.expect_object({"generator", "center", "radius", "subdivisions"});
     const std::string generator = s.at("generator").string();
+    if (generator == "face-skull") {
+        s.expect_object({"generator", "target_tets", "skull_gap"});
+        const FaceShape shape = face_shape(s);
+        return {at_place(s, [&] { return generate_face_skull(shape); }), "face skull"};
+    }
     if (generator != "icosphere")
-        s.at("generator").fail("unknown surface generator '" + generator + "'; valid: icosphere");
+        s.at("generator").fail("unknown surface generator '" + generator + "'; valid: icosphere, face-skull");
+    s.expect_object({"generator", "center", "radius", "subdivisions"});
     const Eigen::Vector3d center = s.at("center").vector(3);
     const double radius = s.at("radius").number();
     const int subdivisions = s.at("subdivisions").integer_in(0, kMaxIcosphereSubdivisions);
@@ -154,7 +162,8 @@ public:
     std::vector<SceneKey> keys() const override
     {
         return {{"[].name", "string", "", "the file or kind", "the body's name in messages"},
-                {"[].surface", "string or object", "an OBJ file | {generator: icosphere, center, radius, subdivisions}", "",
+                {"[].surface", "string or object",
+                 "an OBJ file | {generator: icosphere, center, radius, subdivisions} | {generator: face-skull, target_tets, skull_gap}", "",
                  "the body's closed triangle surface, 3D scenes"},
                 {"[].level_set", "string or object", "a .vdb file | {surface, voxel_size, half_width}", "",
                  "the body's signed distance on an OpenVDB grid (first float level set grid of the file, or the surface converted; half_width 3 voxels), 3D scenes"},

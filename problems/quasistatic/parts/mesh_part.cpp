@@ -2,6 +2,7 @@
 #include "sinew/problems/quasistatic/parts/scene_reading.hpp"
 
 #include "sinew/mesh/box_tets.hpp"
+#include "sinew/mesh/face_mesh.hpp"
 #include "sinew/mesh/graded_axis.hpp"
 #include "sinew/mesh/fusiform_muscle.hpp"
 #include "sinew/mesh/mesh_validation.hpp"
@@ -117,8 +118,13 @@ Mesh generated_mesh(const JsonCursor& m)
             m.fail("more than 2e7 elements");
         return at_place(m, [&] { return fusiform_muscle(shape); });
     }
+    if (generator == "face") {
+        m.expect_object({"generator", "target_tets", "skull_gap"});
+        const FaceShape shape = face_shape(m);
+        return at_place(m, [&] { return generate_face(shape).mesh; });
+    }
     m.at("generator").fail("unknown generator '" + generator +
-                           "'; valid generators: box, rectangle, sheet, fusiform-muscle");
+                           "'; valid generators: box, rectangle, sheet, fusiform-muscle, face");
 }
 
 Mesh scene_mesh(const JsonCursor& m, const std::string& base_folder)
@@ -159,7 +165,7 @@ public:
                 {"tetrahedralize", "string", "", "", "a closed OBJ surface, tetrahedralized by TetGen"},
                 {"max_volume", "number", "(0, inf)", "", "tetrahedralize: the largest tet volume"},
                 {"max_radius_edge_ratio", "number", "(0, inf)", "", "tetrahedralize: the quality bound"},
-                {"generator", "string", "box | rectangle | sheet | fusiform-muscle", "", "a generated mesh"},
+                {"generator", "string", "box | rectangle | sheet | fusiform-muscle | face", "", "a generated mesh"},
                 {"lower", "vector", "", "", "box, rectangle, sheet: the lower corner"},
                 {"upper", "vector", "", "", "box, rectangle, sheet: the upper corner"},
                 {"cells", "integers", "[1, 100000] each", "", "box, rectangle, sheet: cells per axis"},
@@ -173,7 +179,10 @@ public:
                 {"tendon_length", "number", "", "", "fusiform-muscle: length of each tendon (m)"},
                 {"rings", "integer", "[1, 1000]", "", "fusiform-muscle: rings of the cross-section"},
                 {"belly_layers", "integer", "[1, 1000]", "", "fusiform-muscle: layers along the belly"},
-                {"tendon_layers", "integer", "[1, 1000]", "", "fusiform-muscle: layers along each tendon"}};
+                {"tendon_layers", "integer", "[1, 1000]", "", "fusiform-muscle: layers along each tendon"},
+                {"target_tets", "integer", "[1000, 2000000]", "20000", "face: the tet count aimed at (within 25 %)"},
+                {"skull_gap", "number", "[0, 0.015]", "0.0005",
+                 "face: the skull's distance below the lips' and cheeks' inner surface (m), as its face-skull body's"}};
     }
     void read(const JsonCursor& value, SceneAssembly& assembly) const override
     {

@@ -13,9 +13,9 @@ namespace {
 
 NodeSelection node_selection(const JsonCursor& s, int dimension)
 {
-    s.expect_object({"all", "nodes", "box", "plane", "half_space", "group"});
+    s.expect_object({"all", "nodes", "box", "plane", "half_space", "group", "node_set"});
     if (s.keys().size() != 1)
-        s.fail("expected exactly one of all, nodes, box, plane, half_space, group");
+        s.fail("expected exactly one of all, nodes, box, plane, half_space, group, node_set");
     if (auto all = s.find("all")) {
         if (!all->boolean())
             all->fail("must be true");
@@ -40,6 +40,8 @@ NodeSelection node_selection(const JsonCursor& s, int dimension)
             return NodesOnPlane{point, normal};
         return NodesInHalfSpace{point, normal};
     }
+    if (auto set = s.find("node_set"))
+        return NodesOfSet{set->string()};
     return NodesOfGroup{s.at("group").string()};
 }
 
@@ -67,6 +69,16 @@ ParameterText parameter_text(const JsonCursor& p)
         text[key] = value.is_string() ? value.string() : value.number_text();
     }
     return text;
+}
+
+FaceShape face_shape(const JsonCursor& o)
+{
+    FaceShape shape;
+    if (auto t = o.find("target_tets"))
+        shape.target_tets = t->integer_in(1000, 2000000);
+    if (auto g = o.find("skull_gap"))
+        shape.skull_gap = g->number_in(0.0, shape.thickness);
+    return shape;
 }
 
 int group_index(const JsonCursor& where, const Mesh& mesh, const std::string& name)

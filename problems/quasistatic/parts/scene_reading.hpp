@@ -3,6 +3,7 @@
 // parameter text and group names.
 #include "sinew/core/input_error.hpp"
 #include "sinew/energies/models/model_parameters.hpp"
+#include "sinew/mesh/face_mesh.hpp"
 #include "sinew/mesh/mesh.hpp"
 #include "sinew/problems/quasistatic/scene.hpp"
 #include "sinew/problems/quasistatic/strict_json.hpp"
@@ -43,6 +44,12 @@ KeyframeCurve keyframes(const JsonCursor& list);
 /// angle_deg, center}; no axis in 2D) or "map", and "translation" (each
 /// optional; not both rotation and map), as Dirichlet sets and bodies give it.
 PrescribedMotion prescribed_motion(const JsonCursor& b, int dimension);
+
+/// The generated face's shape (mesh/face_mesh.hpp) from an object's optional
+/// "target_tets" (integer) and "skull_gap" (m), FaceShape's defaults
+/// otherwise: the "face" mesh and the "face-skull" body read the same keys,
+/// so the same numbers give the face and its skull.
+FaceShape face_shape(const JsonCursor& o);
 
 /// The index of the mesh group called `name`; an error at `where` listing the groups otherwise.
 int group_index(const JsonCursor& where, const Mesh& mesh, const std::string& name);
