@@ -4,6 +4,7 @@
 #include "sinew/mesh/face_geometry.hpp"
 #include "sinew/mesh/face_skull.hpp"
 #include "sinew/mesh/tetrahedralize_surface.hpp"
+#include "sinew/mesh/triangle_surface.hpp"
 
 #include <algorithm>
 #include <array>
@@ -143,18 +144,7 @@ Mesh shell_surface(const FaceGeometry& g, const CellGrid& grid, int layers, std:
                     quad(node(pi, pj, k), node(qi, qj, k), node(qi, qj, k + 1), node(pi, pj, k + 1));
             }
         }
-    Mesh surface;
-    surface.kind = ElementKind::triangle_3d;
-    surface.nodes.resize(3, static_cast<Eigen::Index>(points.size()));
-    for (std::size_t p = 0; p < points.size(); ++p)
-        surface.nodes.col(static_cast<Eigen::Index>(p)) = points[p];
-    surface.elements.resize(3, static_cast<Eigen::Index>(triangles.size()));
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-        for (int k = 0; k < 3; ++k)
-            surface.elements(k, static_cast<Eigen::Index>(t)) = triangles[t][k];
-    surface.group_names = {kDefaultGroupName};
-    surface.element_groups.assign(surface.num_elements(), 0);
-    return surface;
+    return triangle_surface(points, triangles);
 }
 
 /// TetGen on the surface with its volume bound calibrated so that the tet

@@ -1,5 +1,7 @@
 #include "sinew/mesh/face_skull.hpp"
 
+#include "sinew/mesh/triangle_surface.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -83,19 +85,7 @@ Mesh face_skull(const FaceGeometry& g, double spacing)
         quad(node(0, j, 0), node(0, j, 1), node(0, j + 1, 1), node(0, j + 1, 0));        // left, −x
         quad(node(nx, j, 0), node(nx, j + 1, 0), node(nx, j + 1, 1), node(nx, j, 1));    // right, +x
     }
-
-    Mesh skull;
-    skull.kind = ElementKind::triangle_3d;
-    skull.nodes.resize(3, static_cast<Eigen::Index>(points.size()));
-    for (std::size_t p = 0; p < points.size(); ++p)
-        skull.nodes.col(static_cast<Eigen::Index>(p)) = points[p];
-    skull.elements.resize(3, static_cast<Eigen::Index>(triangles.size()));
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-        for (int k = 0; k < 3; ++k)
-            skull.elements(k, static_cast<Eigen::Index>(t)) = triangles[t][k];
-    skull.group_names = {kDefaultGroupName};
-    skull.element_groups.assign(skull.num_elements(), 0);
-    return skull;
+    return triangle_surface(points, triangles);
 }
 
 } // namespace sinew

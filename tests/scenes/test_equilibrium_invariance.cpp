@@ -1,6 +1,7 @@
 // Every built-in scene up to 6k tets reaches the equilibrium recorded before
 // the Newton core learned to reuse factorizations (issue 14). The 52k and
-// 206k cantilevers are in test_large_equilibrium_invariance.cpp (label heavy).
+// 206k cantilevers are in test_large_equilibrium_invariance.cpp, the faces
+// in test_face_equilibria.cpp (label heavy).
 #include "recorded_equilibrium.hpp"
 
 #include "sinew/problems/quasistatic/builtin_scene_files.hpp"
@@ -33,5 +34,3 @@ TEST_CASE("helical-block-6k reaches its recorded equilibrium") { check_recorded_
 TEST_CASE("hertz-sphere reaches its recorded equilibrium") { check_recorded_equilibrium("hertz-sphere"); }
 TEST_CASE("block-on-sphere reaches its recorded equilibrium") { check_recorded_equilibrium("block-on-sphere"); }
 TEST_CASE("block-on-sphere-vdb reaches its recorded equilibrium") { check_recorded_equilibrium("block-on-sphere-vdb"); }
-TEST_CASE("face-on-skull reaches its recorded equilibrium") { check_recorded_equilibrium("face-on-skull"); }
-TEST_CASE("face-on-skull-gaps reaches its recorded equilibrium") { check_recorded_equilibrium("face-on-skull-gaps"); }
