@@ -95,12 +95,19 @@ void set_step_terms(Scene& scene, const TimeIntegrator& integrator, const Dynami
         scene.stiffness_damping->set_step(integrator.state().x, v_bar, predictor, g);
 }
 
-bool declares_gradient_target(const std::string& solver)
+bool declares_option(const std::string& solver, const std::string& name)
 {
     for (const OptionDeclaration& option : find_solver(solver).declared_options())
-        if (option.name == "gradient_target")
+        if (option.name == name)
             return true;
     return false;
+}
+
+/// Whether the run sets backend option `name` of its solver on every step:
+/// the solver declares it and the caller did not set it.
+bool step_sets(const SceneRunSettings& settings, const std::string& name)
+{
+    return declares_option(settings.solver, name) && settings.options.backend.count(name) == 0;
 }
 
 /// The largest diagonal entry of the step's Hessian ∇²(inertia + E) at x:
@@ -297,17 +304,23 @@ TimeState initial_state(Scene& scene, const DynamicsSettings& d)
 }
 
 /// The solver options of each step: the run's, with one SolverMemory for the
-/// whole run (projected Newton keeps its symbolic analysis across steps), the
-/// KKT tolerance relative to the step's force scale (not to max(1, ‖∇f‖∞) at
-/// the solution, where ∇f vanishes) and, for a solver that declares
-/// gradient_target and was not given one, that target.
+/// whole run (projected Newton keeps its symbolic analysis and its factors
+/// across steps), the KKT tolerance relative to the step's force scale (not
+/// to max(1, ‖∇f‖∞) at the solution, where ∇f vanishes) and, for a solver
+/// that declares them and was not given them, gradient_target set to that
+/// target and finishing_step off: the step's solution error at the target,
+/// about tol times the step's own displacement, lies far below the
+/// integrator's truncation error (docs/dynamics.md), which one more Newton
+/// step would not change.
 class StepOptions {
 public:
     explicit StepOptions(const SceneRunSettings& settings)
         : base_(settings.options), options_(settings.options),
-          set_target_(declares_gradient_target(settings.solver) && settings.options.backend.count("gradient_target") == 0)
+          set_target_(step_sets(settings, "gradient_target"))
     {
         options_.memory = std::make_shared<SolverMemory>();
+        if (step_sets(settings, "finishing_step"))
+            options_.backend["finishing_step"] = "off";
     }
 
     const SolverOptions& for_step(Scene& scene, const TimeIntegrator& integrator, const Eigen::VectorXd& x0)

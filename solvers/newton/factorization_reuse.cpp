@@ -18,8 +18,8 @@ bool FactorizationReuse::solve(const SparseMatrix& lower, double shift, const Ve
     found_indefinite_ = false;
     if (!kept_)
         return false;
-    if (steps_to_skip_ > 0) {
-        --steps_to_skip_;
+    if (backoff_.steps_to_skip > 0) {
+        --backoff_.steps_to_skip;
         ++skipped_steps_;
         return false;
     }
@@ -35,7 +35,7 @@ bool FactorizationReuse::solve(const SparseMatrix& lower, double shift, const Ve
     cg_iterations_ += outcome.iterations;
     if (outcome.status == CgStatus::converged) {
         ++reused_steps_;
-        refusals_in_row_ = 0;
+        backoff_.refusals_in_row = 0;
         return true;
     }
     ++refused_steps_;
@@ -47,10 +47,10 @@ bool FactorizationReuse::solve(const SparseMatrix& lower, double shift, const Ve
 
 void FactorizationReuse::back_off()
 {
-    ++refusals_in_row_;
+    ++backoff_.refusals_in_row;
     // 2^(k−3) − 1 after the k-th refusal, k ≥ 3: 0, 1, 3, 7, then kMaxSkippedSteps = 2⁴ − 1
-    const int doublings = refusals_in_row_ - kRefusalsBeforeBackoff;
-    steps_to_skip_ = doublings < 0 ? 0 : doublings >= 4 ? kMaxSkippedSteps : (1 << doublings) - 1;
+    const int doublings = backoff_.refusals_in_row - kRefusalsBeforeBackoff;
+    backoff_.steps_to_skip = doublings < 0 ? 0 : doublings >= 4 ? kMaxSkippedSteps : (1 << doublings) - 1;
 }
 
 } // namespace sinew

@@ -18,7 +18,9 @@ struct ReuseSettings {
 /// (ForcingTerm). A step for which CG needs more than max_cg_iterations, or
 /// meets a direction of non-positive curvature (A + σI indefinite), is
 /// refused, and the caller factorizes A afresh, which becomes the kept one.
-/// The first iteration has nothing kept and always factorizes.
+/// A solve's first iteration factorizes unless the caller resumes the kept
+/// factors (and the back-off) of a previous solve of the same pattern: the
+/// time steps of a run (resume()).
 ///
 /// Refusals for the iteration limit in a row back off: after the k-th,
 /// k ≥ kRefusalsBeforeBackoff = 3, the next 2^(k−3) − 1 steps (at most
@@ -30,6 +32,12 @@ struct ReuseSettings {
 /// ends the run of refusals. A refusal for non-positive curvature is cheap
 /// and tells the caller something (take the projected step), so it neither
 /// counts nor is skipped.
+/// The state of the back-off after refusals, carried from solve to solve.
+struct ReuseBackoff {
+    int refusals_in_row = 0;  ///< refusals for the iteration limit since CG last delivered a step
+    int steps_to_skip = 0;
+};
+
 class FactorizationReuse {
 public:
     FactorizationReuse(RegularizedFactorization& factorization, ReuseSettings settings);
@@ -43,6 +51,15 @@ public:
     void keep() { kept_ = settings_.enabled; }
     /// The factorization no longer holds usable factors (a refused attempt).
     void forget() { kept_ = false; }
+    /// Whether the factorization holds factors later steps may reuse.
+    bool kept() const { return kept_; }
+    /// Continue where a previous solve on the same factorization ended.
+    void resume(bool factors_kept, ReuseBackoff backoff)
+    {
+        kept_ = factors_kept && settings_.enabled;
+        backoff_ = backoff;
+    }
+    ReuseBackoff backoff() const { return backoff_; }
     /// The last solve() was refused because CG met non-positive curvature:
     /// A + shift·I is not positive definite, so factorizing it would fail too.
     bool found_indefinite() const { return found_indefinite_; }
@@ -71,8 +88,7 @@ private:
     int reused_steps_ = 0;
     int refused_steps_ = 0;
     int skipped_steps_ = 0;
-    int refusals_in_row_ = 0;  ///< refusals for the iteration limit since CG last delivered a step
-    int steps_to_skip_ = 0;
+    ReuseBackoff backoff_;
     double cg_s_ = 0.0;
 };
 

@@ -32,32 +32,38 @@ double raised_shift(double shift, double diagonal_scale)
 
 /// What projected Newton keeps across the solves of one SolverMemory (the
 /// time steps of a run): its factorization, whose symbolic analysis then
-/// serves every solve. Each solve still factorizes at its first iteration:
-/// CG preconditioned by the last solve's factors took 26 iterations for a
-/// step of the 52k cantilever, 2.6 factorizations' time (docs/dynamics.md).
+/// serves every solve, and whether its factors may be reused. With reuse on,
+/// a solve's first iteration tries CG preconditioned by the last solve's
+/// factors before it factorizes: the 52k cantilever's 10 steps then
+/// factorize once (docs/dynamics.md).
 struct NewtonMemory {
     std::shared_ptr<RegularizedFactorization> factorization;
     std::string linear_solver;
     int variables = 0;
+    bool factors_kept = false;
+    ReuseBackoff backoff;
 };
 
 constexpr const char* kNewtonMemory = "newton factorization";
 
-/// The memory's factorization when it fits, else a new one it keeps from now on.
-std::shared_ptr<RegularizedFactorization> remembered_factorization(SolverMemory* memory,
-                                                                   const std::string& linear_solver, int variables)
+/// The memory's state when it fits this solve, else a new one it keeps from now on.
+std::shared_ptr<NewtonMemory> remembered_state(SolverMemory* memory, const std::string& linear_solver,
+                                               int variables)
 {
     if (memory && memory->kind == kNewtonMemory) {
-        const auto* kept = static_cast<const NewtonMemory*>(memory->state.get());
+        auto kept = std::static_pointer_cast<NewtonMemory>(memory->state);
         if (kept->linear_solver == linear_solver && kept->variables == variables)
-            return kept->factorization;
+            return kept;
     }
-    auto factorization = std::make_shared<RegularizedFactorization>(make_linear_solver(linear_solver));
+    auto state = std::make_shared<NewtonMemory>();
+    state->factorization = std::make_shared<RegularizedFactorization>(make_linear_solver(linear_solver));
+    state->linear_solver = linear_solver;
+    state->variables = variables;
     if (memory) {
         memory->kind = kNewtonMemory;
-        memory->state = std::make_shared<NewtonMemory>(NewtonMemory{factorization, linear_solver, variables});
+        memory->state = state;
     }
-    return factorization;
+    return state;
 }
 
 /// One run of projected Newton: the Hessian policy (which H, which shift)
@@ -67,7 +73,8 @@ public:
     ProjectedNewtonRun(Nlp& nlp, const SolverOptions& options, const NewtonSettings& settings,
                        const std::string& solver_name)
         : nlp_(nlp), options_(options), settings_(settings), recorder_(options, solver_name, nlp.name()),
-          factorization_(remembered_factorization(options.memory.get(), settings.linear_solver, nlp.num_variables())),
+          memory_(remembered_state(options.memory.get(), settings.linear_solver, nlp.num_variables())),
+          factorization_(memory_->factorization),
           reuse_(*factorization_, settings.reuse),
           hessian_(nlp.hessian_pattern(), nlp.num_variables()), hessian_values_(nlp.hessian_pattern().nonzeros()),
           projected_(nlp.supports(Projection::clamp)),
@@ -82,9 +89,16 @@ public:
         recorder_.add_statistic("projected_iterations", 0.0);
         recorder_.set_row_annotation(settings.annotate_row);
         recorder_.set_baseline(*factorization_);
+        reuse_.resume(memory_->factors_kept, memory_->backoff);
+        resumed_ = reuse_.kept();
     }
 
     Result run();
+
+    /// Whether this run started on the factors a previous solve kept.
+    bool resumed() const { return resumed_; }
+    /// The next run on the same memory factorizes at its first iteration.
+    void drop_kept_factors() { memory_->factors_kept = false; }
 
 private:
     Result finish(Status status, const std::string& message)
@@ -94,6 +108,8 @@ private:
         recorder_.add_statistic("cg_refused_steps", reuse_.refused_steps());
         recorder_.add_statistic("cg_skipped_steps", reuse_.skipped_steps());
         recorder_.add_statistic("cg_s", reuse_.cg_seconds());
+        memory_->factors_kept = reuse_.kept();
+        memory_->backoff = reuse_.backoff();
         return recorder_.finish(status, message, x_, *factorization_);
     }
     void evaluate_gradient(const VectorXd& at, VectorXd& into)
@@ -177,7 +193,8 @@ private:
     const SolverOptions& options_;
     NewtonSettings settings_;
     NewtonRecorder recorder_;
-    std::shared_ptr<RegularizedFactorization> factorization_;  ///< kept in SolverMemory across solves when given
+    std::shared_ptr<NewtonMemory> memory_;  ///< kept in SolverMemory across solves when given
+    std::shared_ptr<RegularizedFactorization> factorization_;
     FactorizationReuse reuse_;
     ForcingTerm forcing_;
     double eta_ = ForcingTerm::eta_max;  ///< this iteration's forcing term
@@ -193,6 +210,7 @@ private:
     const bool projected_;
     const bool inexact_;  ///< steps solved to the forcing term η: reuse on, or an iterative linear solver
     ActiveBounds bounds_;
+    bool resumed_ = false;  ///< started on the factors of a previous solve
 
     VectorXd x_, gradient_, rhs_, step_, trial_, trial_gradient_;
     double f_ = 0.0;
@@ -221,8 +239,10 @@ Result ProjectedNewtonRun::run()
         // inexact step that just meets the target (η up to ‖∇f‖/‖∇f₀‖) leaves
         // x as far from the solution as the target allows, where an exact
         // Newton step would as a rule have overshot it by orders of magnitude.
+        // With finishing_step off the solve ends at the target (time steps).
         const bool at_target = reached();
-        if (at_target && (finishing_ || !inexact_ || iteration > options_.max_iterations))
+        const bool no_finishing_step = !inexact_ || !settings_.finishing_step;
+        if (at_target && (finishing_ || no_finishing_step || iteration > options_.max_iterations))
             return finish(Status::converged, "gradient reduced by tol");
         finishing_ = at_target;
         if (iteration > options_.max_iterations)
@@ -375,6 +395,11 @@ public:
                                            "for a solve warm-started near its solution); 0: tol times its value at "
                                            "the start",
                                            0.0, 1e300));
+        declarations.push_back(choice_option(
+            "finishing_step", "on",
+            "on: once an inexact step (reused factorization, iterative linear solver) meets the target, one more "
+            "step solved to a relative residual of 1e-4 leaves x well inside it; off: stop at the target",
+            {"on", "off"}));
         return declarations;
     }
 
@@ -407,6 +432,7 @@ private:
         const OptionValues values = read_options(name(), declared_options(), {}, options.backend);
         NewtonSettings settings = newton_settings(values);
         settings.gradient_target = values.real("gradient_target");
+        settings.finishing_step = values.text("finishing_step") == "on";
         return settings;
     }
 };
@@ -446,10 +472,42 @@ NewtonSettings newton_settings(const OptionValues& values)
     return settings;
 }
 
+namespace {
+
+/// `retry` with the counts of the attempt before it added: iterations,
+/// evaluations, linear solves, time and every statistic.
+void add_earlier_attempt(Result& retry, const Result& earlier)
+{
+    retry.iterations += earlier.iterations;
+    retry.function_evaluations += earlier.function_evaluations;
+    if (earlier.linear_solves >= 0)
+        retry.linear_solves = std::max(0, retry.linear_solves) + earlier.linear_solves;
+    retry.time_s += earlier.time_s;
+    for (const auto& [key, value] : earlier.statistics)
+        retry.statistics[key] += value;
+    retry.statistics["restarts_without_kept_factors"] += 1.0;
+}
+
+} // namespace
+
+// A solve that started on a previous solve's factors takes inexact steps
+// from its first iteration. Where the target lies near the round-off of f
+// (a time step at tol 1e-10), those steps can creep into the range where f
+// no longer measures a decrease, and the line search stalls short of the
+// target; a first step on fresh factors jumps past that range. Such a solve
+// is run again from its start without the kept factors, its counts added.
 Result run_projected_newton(Nlp& nlp, const SolverOptions& options, const NewtonSettings& settings,
                             const std::string& solver_name)
 {
-    return ProjectedNewtonRun(nlp, options, settings, solver_name).run();
+    ProjectedNewtonRun attempt(nlp, options, settings, solver_name);
+    const Result result = attempt.run();
+    const bool short_of_target = result.status == Status::stalled || result.status == Status::line_search_failed;
+    if (!attempt.resumed() || !short_of_target)
+        return result;
+    attempt.drop_kept_factors();
+    Result retry = ProjectedNewtonRun(nlp, options, settings, solver_name).run();
+    add_earlier_attempt(retry, result);
+    return retry;
 }
 
 std::unique_ptr<Solver> make_projected_newton_solver() { return std::make_unique<ProjectedNewton>(); }

@@ -44,6 +44,9 @@ struct NewtonSettings {
     /// Converged when the (projected) gradient's ∞-norm is at most this;
     /// 0: tol × its value at the start (SolverOptions::tolerance).
     double gradient_target = 0.0;
+    /// Once an inexact step (reused factors, iterative linear solver) meets
+    /// the target, one more step solved to η = 1e-4 before the solve ends.
+    bool finishing_step = true;
     /// See NewtonRecorder::set_row_annotation (may be empty).
     std::function<void(HistoryRow&)> annotate_row;
 };

@@ -84,6 +84,41 @@ TEST_CASE("dynamic scenes: with large damping and constant input the run settles
     }
 }
 
+TEST_CASE("dynamic scenes: projected Newton keeps its factors from step to step and reaches the same states",
+          "[time]")
+{
+    Scene kept = parse_scene(beam(dynamics_json("implicit-euler", 0.01, 0.1)), "beam");
+    Scene fresh = parse_scene(beam(dynamics_json("implicit-euler", 0.01, 0.1)), "beam");
+    const Trajectory reused = run_dynamic_scene(kept);
+    SceneRunSettings settings;
+    settings.solver = "projected-newton";
+    settings.options.tolerance = 1e-10;
+    settings.options.backend["reuse_factorization"] = "off";
+    const TimeSteppingOutcome plain = run_time_stepping(fresh, settings);
+    REQUIRE(reused.outcome.converged);
+    REQUIRE(plain.converged);
+    REQUIRE(reused.outcome.steps.size() == plain.steps.size());
+
+    int factorizations = 0, steps_without = 0;
+    for (std::size_t k = 1; k < plain.steps.size(); ++k) {
+        const int n = reused.outcome.steps[k].factorizations;
+        CAPTURE(k, n, plain.steps[k].factorizations);
+        CHECK(plain.steps[k].factorizations >= 1);  // without reuse every step factorizes
+        factorizations += n;
+        steps_without += n == 0 ? 1 : 0;
+    }
+    // The first step factorizes: nothing is kept before it. Later steps
+    // start on CG preconditioned by the factors an earlier step left.
+    CHECK(reused.outcome.steps[1].factorizations >= 1);
+    CHECK(steps_without >= 1);
+    CHECK(factorizations < static_cast<int>(plain.steps.size()) - 1);
+
+    const Eigen::VectorXd rest = Eigen::Map<const Eigen::VectorXd>(kept.mesh.nodes.data(), kept.mesh.nodes.size());
+    const double displacement = (plain.state.x - rest).cwiseAbs().maxCoeff();
+    REQUIRE(displacement > 1e-4);
+    CHECK((reused.outcome.state.x - plain.state.x).cwiseAbs().maxCoeff() < 1e-7 * displacement);
+}
+
 TEST_CASE("dynamic scenes: result.json rows, VTU files with velocity and the ParaView collection", "[time]")
 {
     const auto folder = scratch_folder("output");

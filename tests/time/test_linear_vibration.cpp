@@ -92,6 +92,7 @@ TEST_CASE("linear vibration: each integrator follows the analytic modal solution
         const int steps = 160;  // four periods of the slowest mode
         Scene scene = parse_scene(cube_scene(dynamics_json(integrator, h, steps * h, initial_velocity())), "cube");
         const Trajectory run = run_dynamic_scene(scene);
+        CAPTURE(run.outcome.last.message, run.outcome.steps.size(), run.outcome.last.iterations);
         REQUIRE(run.outcome.converged);
         REQUIRE(run.states.size() == static_cast<size_t>(steps + 1));
 
