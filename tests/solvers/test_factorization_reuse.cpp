@@ -302,3 +302,21 @@ TEST_CASE("reuse_factorization on needs a direct linear solver, auto follows the
     options.backend = {{"max_cg_iterations", "0"}};
     CHECK_THROWS_AS(solve(*nlp, "projected-newton", options), InputError);
 }
+
+TEST_CASE("finishing_step off ends an inexact solve at its target, one iteration before the finishing step")
+{
+    auto nlp = find_builtin_problem("rosenbrock1000").make();
+    SolverOptions finishing;
+    finishing.backend["reuse_factorization"] = "on";
+    SolverOptions at_target = finishing;
+    at_target.backend["finishing_step"] = "off";
+    const Result with = solve(*nlp, "projected-newton", finishing);
+    const Result without = solve(*nlp, "projected-newton", at_target);
+    CAPTURE(with.message, without.message, with.kkt_residual, without.kkt_residual);
+    REQUIRE(with.status == Status::converged);
+    REQUIRE(without.status == Status::converged);
+    CHECK(without.iterations == with.iterations - 1);
+    // Same iterates up to the target: the finishing step only moves x closer.
+    CHECK(with.kkt_residual < without.kkt_residual);
+    CHECK((with.x - without.x).cwiseAbs().maxCoeff() < 1e-6);
+}
