@@ -258,13 +258,8 @@ private:
 /// Adds a step's solve to the whole run's result.
 void add_step(Result& run, const Result& step, const TimeStepRow& row, double elapsed_s)
 {
-    run.iterations += step.iterations;
-    run.function_evaluations += step.function_evaluations;
-    if (step.linear_solves >= 0)
-        run.linear_solves = std::max(0, run.linear_solves) + step.linear_solves;
+    add_counts(run, step);
     run.time_s += step.time_s;
-    for (const auto& [key, value] : step.statistics)
-        run.statistics[key] += value;
     run.constraint_violation = std::max(run.constraint_violation, step.constraint_violation);
     run.kkt_residual = std::max(run.kkt_residual, step.kkt_residual);
     HistoryRow history;

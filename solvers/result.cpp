@@ -1,5 +1,7 @@
 #include "sinew/solvers/result.hpp"
 
+#include <algorithm>
+
 namespace sinew {
 
 std::string to_string(Status status)
@@ -16,6 +18,16 @@ std::string to_string(Status status)
     case Status::failed: return "failed";
     }
     return "failed";
+}
+
+void add_counts(Result& total, const Result& part)
+{
+    total.iterations += part.iterations;
+    total.function_evaluations += part.function_evaluations;
+    if (part.linear_solves >= 0)
+        total.linear_solves = std::max(0, total.linear_solves) + part.linear_solves;
+    for (const auto& [key, value] : part.statistics)
+        total.statistics[key] += value;
 }
 
 } // namespace sinew

@@ -70,4 +70,10 @@ struct Result {
     std::vector<HistoryRow> history;
 };
 
+/// Adds `part`'s counts to `total` (a run made of several solves):
+/// iterations, function evaluations, linear solves (when `part` reports
+/// them) and every statistic. Time, history and the end state are the
+/// caller's to combine.
+void add_counts(Result& total, const Result& part);
+
 } // namespace sinew

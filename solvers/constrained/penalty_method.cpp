@@ -196,11 +196,7 @@ void OuterLoop::absorb(const Result& inner, int outer)
         row.iteration = history_rows_++;
         total_.history.push_back(row);
     }
-    total_.iterations += inner.iterations;
-    total_.function_evaluations += inner.function_evaluations;
-    total_.linear_solves = std::max(0, total_.linear_solves) + std::max(0, inner.linear_solves);
-    for (const auto& [key, value] : inner.statistics)
-        total_.statistics[key] += value;
+    add_counts(total_, inner);
 }
 
 Result OuterLoop::finish(Status status, const std::string& message, const VectorXd& x)

@@ -472,30 +472,13 @@ NewtonSettings newton_settings(const OptionValues& values)
     return settings;
 }
 
-namespace {
-
-/// `retry` with the counts of the attempt before it added: iterations,
-/// evaluations, linear solves, time and every statistic.
-void add_earlier_attempt(Result& retry, const Result& earlier)
-{
-    retry.iterations += earlier.iterations;
-    retry.function_evaluations += earlier.function_evaluations;
-    if (earlier.linear_solves >= 0)
-        retry.linear_solves = std::max(0, retry.linear_solves) + earlier.linear_solves;
-    retry.time_s += earlier.time_s;
-    for (const auto& [key, value] : earlier.statistics)
-        retry.statistics[key] += value;
-    retry.statistics["restarts_without_kept_factors"] += 1.0;
-}
-
-} // namespace
-
 // A solve that started on a previous solve's factors takes inexact steps
 // from its first iteration. Where the target lies near the round-off of f
 // (a time step at tol 1e-10), those steps can creep into the range where f
 // no longer measures a decrease, and the line search stalls short of the
 // target; a first step on fresh factors jumps past that range. Such a solve
-// is run again from its start without the kept factors, its counts added.
+// is run again from its start without the kept factors, the counts and
+// time of the first attempt added.
 Result run_projected_newton(Nlp& nlp, const SolverOptions& options, const NewtonSettings& settings,
                             const std::string& solver_name)
 {
@@ -506,7 +489,9 @@ Result run_projected_newton(Nlp& nlp, const SolverOptions& options, const Newton
         return result;
     attempt.drop_kept_factors();
     Result retry = ProjectedNewtonRun(nlp, options, settings, solver_name).run();
-    add_earlier_attempt(retry, result);
+    add_counts(retry, result);
+    retry.time_s += result.time_s;
+    retry.statistics["restarts_without_kept_factors"] += 1.0;
     return retry;
 }
 
