@@ -1,0 +1,39 @@
+#pragma once
+#include "sinew/energies/models/constitutive_model.hpp"
+#include "sinew/mpm/particles.hpp"
+#include "sinew/mpm/sparse_grid.hpp"
+#include "sinew/mpm/transfers.hpp"
+
+#include <string>
+#include <vector>
+
+namespace sinew {
+
+template <int Dim>
+struct ExplicitStepSettings {
+    double time_step = 1e-4;  ///< Δt, s
+    TransferSettings transfer;
+    Eigen::Matrix<double, Dim, 1> gravity = Eigen::Matrix<double, Dim, 1>::Zero();
+};
+
+/// How a step went: empty `failure` when every particle's stress was finite.
+struct ExplicitStepReport {
+    std::string failure;
+};
+
+/// One explicit (symplectic Euler) MLS-MPM step (Hu et al. 2018, "A moving
+/// least squares material point method", §4):
+///   particles_to_grid: m_i, (m v)_i;
+///   grid forces, the MLS stress divergence
+///     f_i = −Σ_p V_p⁰ P(F_p) F_pᵀ D_p⁻¹ (x_i − x_p) w_ip;
+///   grid update v_i ← ((m v)_i + Δt f_i)/m_i + Δt g on nodes with mass;
+///   grid_to_particles: v_p, C_p;
+///   advection x_p ← x_p + Δt v_p and F_p ← (I + Δt C_p) F_p.
+/// P comes from models[material_p] at the particle's material point. A
+/// particle whose ψ or P is not finite (an inverted F for a model undefined
+/// there) leaves the particles as they were and names itself in `failure`.
+template <int Dim>
+ExplicitStepReport explicit_step(Particles<Dim>& particles, const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
+                                 const ExplicitStepSettings<Dim>& settings, SparseGrid<Dim>& grid);
+
+} // namespace sinew

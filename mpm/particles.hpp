@@ -1,0 +1,47 @@
+#pragma once
+#include "sinew/energies/models/constitutive_model.hpp"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace sinew {
+
+/// The material points of MLS-MPM as plain arrays, one entry per particle
+/// (structure of arrays; docs/mpm.md): state advanced by the transfers and
+/// the step, and what the constitutive models read.
+template <int Dim>
+struct Particles {
+    using Vector = Eigen::Matrix<double, Dim, 1>;
+    using Matrix = Eigen::Matrix<double, Dim, Dim>;
+
+    std::vector<Vector> x;            ///< position
+    std::vector<Vector> v;            ///< velocity
+    std::vector<double> mass;         ///< m_p
+    std::vector<double> volume;       ///< rest volume V_p⁰
+    std::vector<Matrix> F;            ///< deformation gradient
+    /// The MLS velocity gradient Σ_i w_ip v_i (x_i − x_p)ᵀ D_p⁻¹ of the last
+    /// grid-to-particle transfer: APIC's affine matrix C_p, and ∇v_p in the
+    /// update of F.
+    std::vector<Matrix> C;
+    std::vector<int> material;                 ///< index into the run's models
+    std::vector<MaterialPoint<Dim>> point;    ///< fiber director, activation, damage
+
+    int size() const { return static_cast<int>(x.size()); }
+
+    /// Appends a particle at rest shape (F = I, C = 0) with default material data.
+    void add(const Vector& position, const Vector& velocity, double particle_mass, double rest_volume,
+             int material_index = 0)
+    {
+        x.push_back(position);
+        v.push_back(velocity);
+        mass.push_back(particle_mass);
+        volume.push_back(rest_volume);
+        F.push_back(Matrix::Identity());
+        C.push_back(Matrix::Zero());
+        material.push_back(material_index);
+        point.emplace_back();
+    }
+};
+
+} // namespace sinew

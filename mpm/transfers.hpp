@@ -1,0 +1,42 @@
+#pragma once
+#include "sinew/mpm/bspline_stencil.hpp"
+#include "sinew/mpm/particles.hpp"
+#include "sinew/mpm/sparse_grid.hpp"
+
+namespace sinew {
+
+/// How velocities go between particles and grid.
+enum class TransferScheme {
+    apic,     ///< affine particle-in-cell (Jiang et al. 2015): C_p carried by the particles
+    pic_flip  ///< PIC blended with FLIP's increment, no affine part
+};
+
+struct TransferSettings {
+    SplineOrder order = SplineOrder::quadratic;
+    TransferScheme scheme = TransferScheme::apic;
+    /// PIC/FLIP only: the share α of FLIP, 0 (PIC) to 1 (FLIP).
+    double flip_ratio = 0.95;
+};
+
+/// The particle-to-grid transfer on a cleared grid:
+///   m_i = Σ_p w_ip m_p,  (m v)_i = Σ_p w_ip m_p (v_p + C_p (x_i − x_p))
+/// (C_p = 0 for PIC/FLIP), and v_i = (m v)_i / m_i where m_i > 0, written to
+/// both velocity and velocity_transferred. Throws InputError naming the
+/// first particle whose stencil leaves the grid's indices.
+template <int Dim>
+void particles_to_grid(const Particles<Dim>& particles, const TransferSettings& settings, SparseGrid<Dim>& grid);
+
+/// The grid-to-particle transfer of the grid's velocity:
+///   v_p = Σ_i w_ip v_i  (APIC and PIC; PIC/FLIP blends in α times
+///   FLIP's v_p + Σ_i w_ip (v_i − v_i transferred)),
+///   C_p = Σ_i w_ip v_i (x_i − x_p)ᵀ D_p⁻¹,  D_p = σ dx² I (apic_inertia_factor),
+/// the MLS velocity gradient, exact for affine grid velocities.
+template <int Dim>
+void grid_to_particles(const SparseGrid<Dim>& grid, const TransferSettings& settings, Particles<Dim>& particles);
+
+/// The stencil of particle p, after checking that the grid can hold it
+/// (InputError naming p and its position otherwise).
+template <int Dim>
+BSplineStencil<Dim> checked_stencil(const Particles<Dim>& particles, int p, double dx, SplineOrder order);
+
+} // namespace sinew
