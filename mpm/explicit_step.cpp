@@ -41,7 +41,7 @@ std::string add_stress_impulses(const Particles<Dim>& particles,
     return {};
 }
 
-/// v_i = (m v)_i / m_i + Δt g where m_i > 0.
+/// v_i = (m v)_i / m_i + Δt g where m_i > 0, then the walls' conditions.
 template <int Dim>
 void update_grid_velocity(const ExplicitStepSettings<Dim>& settings, SparseGrid<Dim>& grid)
 {
@@ -50,6 +50,8 @@ void update_grid_velocity(const ExplicitStepSettings<Dim>& settings, SparseGrid<
         if (grid.mass[s] > 0.0)
             grid.velocity[s] = grid.momentum[s] / grid.mass[s] + settings.time_step * settings.gravity;
     }
+    if (settings.walls)
+        apply_walls(*settings.walls, grid);
 }
 
 } // namespace
