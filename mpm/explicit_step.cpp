@@ -41,7 +41,7 @@ std::string add_stress_impulses(const Particles<Dim>& particles,
     return {};
 }
 
-/// v_i = (m v)_i / m_i + Δt g where m_i > 0, then the walls' conditions.
+/// v_i = (m v)_i / m_i + Δt g where m_i > 0, then the walls' and colliders' conditions.
 template <int Dim>
 void update_grid_velocity(const ExplicitStepSettings<Dim>& settings, SparseGrid<Dim>& grid)
 {
@@ -52,6 +52,7 @@ void update_grid_velocity(const ExplicitStepSettings<Dim>& settings, SparseGrid<
     }
     if (settings.walls)
         apply_walls(*settings.walls, grid);
+    apply_colliders(settings.colliders, grid);
 }
 
 } // namespace

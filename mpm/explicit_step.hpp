@@ -2,6 +2,7 @@
 #include "sinew/energies/models/constitutive_model.hpp"
 #include "sinew/mpm/particles.hpp"
 #include "sinew/mpm/sparse_grid.hpp"
+#include "sinew/mpm/grid_colliders.hpp"
 #include "sinew/mpm/grid_walls.hpp"
 #include "sinew/mpm/transfers.hpp"
 
@@ -18,6 +19,8 @@ struct ExplicitStepSettings {
     Eigen::Matrix<double, Dim, 1> gravity = Eigen::Matrix<double, Dim, 1>::Zero();
     /// Walls around the domain, applied to the grid velocity (none by default).
     std::optional<GridWalls<Dim>> walls;
+    /// Rigid bodies acting on the grid after the walls (none by default).
+    std::vector<GridCollider<Dim>> colliders;
 };
 
 /// How a step went: empty `failure` when every particle's stress was finite.
@@ -31,7 +34,7 @@ struct ExplicitStepReport {
 ///   grid forces, the MLS stress divergence
 ///     f_i = −Σ_p V_p⁰ P(F_p) F_pᵀ D_p⁻¹ (x_i − x_p) w_ip;
 ///   grid update v_i ← ((m v)_i + Δt f_i)/m_i + Δt g on nodes with mass,
-///   then the walls' conditions (GridWalls);
+///   then the walls' and the colliders' conditions;
 ///   grid_to_particles: v_p, C_p;
 ///   advection x_p ← x_p + Δt v_p and F_p ← (I + Δt C_p) F_p.
 /// P comes from models[material_p] at the particle's material point. A

@@ -1,24 +1,10 @@
 #include "sinew/mpm/grid_walls.hpp"
 
-#include "sinew/core/input_error.hpp"
-
-
 namespace sinew {
-
-WallCondition wall_condition(const std::string& name)
-{
-    if (name == "sticky")
-        return WallCondition::sticky;
-    if (name == "slip")
-        return WallCondition::slip;
-    if (name == "separate")
-        return WallCondition::separate;
-    throw InputError("wall condition '" + name + "' is unknown; it must be one of: sticky, slip, separate");
-}
 
 template <int Dim>
 GridWalls<Dim> GridWalls<Dim>::box(const Eigen::Matrix<double, Dim, 1>& lower,
-                                   const Eigen::Matrix<double, Dim, 1>& upper, WallCondition condition)
+                                   const Eigen::Matrix<double, Dim, 1>& upper, GridCondition condition)
 {
     GridWalls walls;
     walls.lower = lower;
@@ -28,39 +14,24 @@ GridWalls<Dim> GridWalls<Dim>::box(const Eigen::Matrix<double, Dim, 1>& lower,
     return walls;
 }
 
-namespace {
-
-/// v after a wall of outward normal ±e_axis (sign = −1 lower face, +1 upper).
-template <int Dim>
-void apply_face(WallCondition condition, int axis, double sign, Eigen::Matrix<double, Dim, 1>& v)
-{
-    const double outward = sign * v[axis];  // v·n, n the wall's outward normal
-    switch (condition) {
-    case WallCondition::sticky: v.setZero(); break;
-    case WallCondition::slip: v[axis] = 0.0; break;
-    case WallCondition::separate:
-        if (outward > 0.0)
-            v[axis] = 0.0;
-        break;
-    }
-}
-
-} // namespace
-
 template <int Dim>
 void apply_walls(const GridWalls<Dim>& walls, SparseGrid<Dim>& grid)
 {
+    using Vector = Eigen::Matrix<double, Dim, 1>;
     const double band = walls.thickness * grid.dx();
     for (int slot = 0; slot < grid.slots(); ++slot) {
         const auto s = static_cast<std::size_t>(slot);
         if (!(grid.mass[s] > 0.0))
             continue;
         const auto x = grid.position(slot);
+        const Vector at_rest = Vector::Zero();
         for (int a = 0; a < Dim; ++a) {
+            const Vector into_domain = Vector::Unit(a);  // the lower face's normal; the upper face's is −e_a
+            const auto& faces = walls.condition[static_cast<std::size_t>(a)];
             if (x[a] < walls.lower[a] + band)
-                apply_face<Dim>(walls.condition[static_cast<std::size_t>(a)][0], a, -1.0, grid.velocity[s]);
+                grid.velocity[s] = conditioned_velocity<Dim>(faces[0], grid.velocity[s], at_rest, into_domain);
             if (x[a] > walls.upper[a] - band)
-                apply_face<Dim>(walls.condition[static_cast<std::size_t>(a)][1], a, 1.0, grid.velocity[s]);
+                grid.velocity[s] = conditioned_velocity<Dim>(faces[1], grid.velocity[s], at_rest, -into_domain);
         }
     }
 }

@@ -1,37 +1,28 @@
 #pragma once
+#include "sinew/mpm/grid_condition.hpp"
 #include "sinew/mpm/sparse_grid.hpp"
 
 #include <array>
-#include <string>
 
 namespace sinew {
 
-/// What a wall does to the grid velocity of the nodes next to it.
-enum class WallCondition {
-    sticky,   ///< v = 0
-    slip,     ///< the normal component removed: v ← v − (v·n) n
-    separate  ///< the normal component removed only when it points into the wall
-};
-
-/// "sticky", "slip", "separate"; InputError naming the choices otherwise.
-WallCondition wall_condition(const std::string& name);
-
 /// The axis-aligned walls of the domain [lower, upper] (MPM's usual grid
 /// boundary, as ziran2020 and mpm88 apply it): a node within `thickness`
-/// cells of a face, or beyond it, gets that face's condition after the grid
-/// update, so that no particle's velocity carries it through the wall.
+/// cells of a face, or beyond it, gets that face's condition (a wall at
+/// rest, its normal into the domain) after the grid update, so that no
+/// particle's velocity carries it through the wall.
 /// Nodes near two faces get both.
 template <int Dim>
 struct GridWalls {
     Eigen::Matrix<double, Dim, 1> lower = Eigen::Matrix<double, Dim, 1>::Zero();
     Eigen::Matrix<double, Dim, 1> upper = Eigen::Matrix<double, Dim, 1>::Ones();
     /// The condition of the lower and upper face of each axis.
-    std::array<std::array<WallCondition, 2>, Dim> condition{};
+    std::array<std::array<GridCondition, 2>, Dim> condition{};
     double thickness = 2.0;  ///< in cells of dx
 
     /// Every face with the same condition.
     static GridWalls box(const Eigen::Matrix<double, Dim, 1>& lower, const Eigen::Matrix<double, Dim, 1>& upper,
-                         WallCondition condition);
+                         GridCondition condition);
 };
 
 /// Applies the walls to the velocity of every node with mass.

@@ -16,14 +16,14 @@ using namespace sinew;
 namespace {
 
 /// The velocity a node by the floor z = 0 keeps under `condition`.
-Eigen::Vector3d after_floor(WallCondition condition, const Eigen::Vector3d& v)
+Eigen::Vector3d after_floor(GridCondition condition, const Eigen::Vector3d& v)
 {
     SparseGrid<3> grid(0.1);
     const int slot = grid.touch(Eigen::Vector3i(5, 5, 1));  // 0.1 above the floor, within the band
     grid.mass[static_cast<std::size_t>(slot)] = 1.0;
     grid.velocity[static_cast<std::size_t>(slot)] = v;
     GridWalls<3> walls = GridWalls<3>::box(Eigen::Vector3d::Constant(-10.0), Eigen::Vector3d::Constant(10.0),
-                                           WallCondition::sticky);
+                                           GridCondition::sticky);
     walls.lower.z() = 0.0;
     walls.condition[2][0] = condition;
     apply_walls(walls, grid);
@@ -35,14 +35,14 @@ Eigen::Vector3d after_floor(WallCondition condition, const Eigen::Vector3d& v)
 TEST_CASE("grid walls: sticky stops, slip drops the normal part, separate drops it only towards the wall")
 {
     const Eigen::Vector3d towards(0.3, -0.2, -1.0), away(0.3, -0.2, 1.0);
-    CHECK(after_floor(WallCondition::sticky, towards).isZero());
-    CHECK(after_floor(WallCondition::sticky, away).isZero());
-    CHECK(after_floor(WallCondition::slip, towards) == Eigen::Vector3d(0.3, -0.2, 0.0));
-    CHECK(after_floor(WallCondition::slip, away) == Eigen::Vector3d(0.3, -0.2, 0.0));
-    CHECK(after_floor(WallCondition::separate, towards) == Eigen::Vector3d(0.3, -0.2, 0.0));
-    CHECK(after_floor(WallCondition::separate, away) == away);
-    CHECK(wall_condition("slip") == WallCondition::slip);
-    CHECK_THROWS_WITH(wall_condition("glue"), Catch::Contains("sticky, slip, separate"));
+    CHECK(after_floor(GridCondition::sticky, towards).isZero());
+    CHECK(after_floor(GridCondition::sticky, away).isZero());
+    CHECK(after_floor(GridCondition::slip, towards) == Eigen::Vector3d(0.3, -0.2, 0.0));
+    CHECK(after_floor(GridCondition::slip, away) == Eigen::Vector3d(0.3, -0.2, 0.0));
+    CHECK(after_floor(GridCondition::separate, towards) == Eigen::Vector3d(0.3, -0.2, 0.0));
+    CHECK(after_floor(GridCondition::separate, away) == away);
+    CHECK(grid_condition("slip") == GridCondition::slip);
+    CHECK_THROWS_WITH(grid_condition("glue"), Catch::Contains("sticky, slip, separate"));
 }
 
 TEST_CASE("grid walls: a block dropped on a separating floor bounces off it and keeps its sideways momentum")
@@ -60,7 +60,7 @@ TEST_CASE("grid walls: a block dropped on a separating floor bounces off it and 
     settings.time_step = 1e-3;
     settings.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
     settings.walls = GridWalls<3>::box(Eigen::Vector3d(-5.0, -5.0, 0.0), Eigen::Vector3d(5.0, 5.0, 5.0),
-                                       WallCondition::separate);
+                                       GridCondition::separate);
     SparseGrid<3> grid(dx);
     const double mass = total_mass(particles);
     double lowest = 1e300, fastest_down = 0.0, fastest_up = 0.0;

@@ -40,7 +40,7 @@ double bar_error(int cells, TransferScheme scheme)
     settings.transfer.flip_ratio = 1.0;
     // The nodes at x ≤ 0 and x ≥ L are held: walls half a cell beyond, one cell thick.
     settings.walls = GridWalls<3>::box(Eigen::Vector3d(-0.5 * dx, -100.0, -100.0),
-                                       Eigen::Vector3d(kLength + 0.5 * dx, 100.0, 100.0), WallCondition::sticky);
+                                       Eigen::Vector3d(kLength + 0.5 * dx, 100.0, 100.0), GridCondition::sticky);
     settings.walls->thickness = 1.0;
     const double omega = k * std::sqrt(kYoung / kDensity), period = 2.0 * M_PI / omega;
     const int steps = static_cast<int>(std::ceil(period / (0.2 * cfl_time_step<3>(particles, models, dx, 1.0))));
