@@ -11,6 +11,12 @@ struct ReuseSettings {
     int max_cg_iterations = 20;
 };
 
+/// The state of the back-off after refusals, carried from solve to solve.
+struct ReuseBackoff {
+    int refusals_in_row = 0;  ///< refusals for the iteration limit since CG last delivered a step
+    int steps_to_skip = 0;
+};
+
 /// Inexact Newton on a kept factorization (DESIGN.md, "Solvers: one Newton
 /// core"): once a Newton matrix A₀ has been factorized, the step of a later
 /// iteration solves (A + σI) d = b by conjugate gradients preconditioned with
@@ -32,12 +38,6 @@ struct ReuseSettings {
 /// ends the run of refusals. A refusal for non-positive curvature is cheap
 /// and tells the caller something (take the projected step), so it neither
 /// counts nor is skipped.
-/// The state of the back-off after refusals, carried from solve to solve.
-struct ReuseBackoff {
-    int refusals_in_row = 0;  ///< refusals for the iteration limit since CG last delivered a step
-    int steps_to_skip = 0;
-};
-
 class FactorizationReuse {
 public:
     FactorizationReuse(RegularizedFactorization& factorization, ReuseSettings settings);
