@@ -4,6 +4,8 @@
 #include "sinew/energies/models/codimensional_corotated.hpp"
 #include "sinew/energies/models/fixed_corotated.hpp"
 #include "sinew/energies/models/mooney_rivlin_muscle.hpp"
+#include "sinew/energies/models/plane_fixed_corotated.hpp"
+#include "sinew/energies/models/plane_stable_neo_hookean.hpp"
 #include "sinew/energies/models/qr_anisotropic.hpp"
 #include "sinew/energies/models/stable_neo_hookean.hpp"
 
@@ -86,8 +88,8 @@ const std::vector<ModelEntry>& model_catalog()
         entry_of<CodimensionalCorotated>("corotated membrane for triangles in 3D, F 3x2 (seed 002)"),
         entry_of<QrAnisotropic<3>, QrAnisotropic<2>>(
             "QR-based anisotropic elasticity with damage, 2D or 3D by the size of F (seed 004 §3)"),
-        entry_of<StableNeoHookean>("stable Neo-Hookean (Smith, de Goes, Kim 2018)"),
-        entry_of<FixedCorotated>("fixed corotated (Stomakhin et al. 2012)"),
+        entry_of<StableNeoHookean, PlaneStableNeoHookean>("stable Neo-Hookean (Smith, de Goes, Kim 2018), 3D or plane"),
+        entry_of<FixedCorotated, PlaneFixedCorotated>("fixed corotated (Stomakhin et al. 2012), 3D or plane"),
     };
     return catalog;
 }

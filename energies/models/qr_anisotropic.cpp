@@ -4,6 +4,7 @@
 #include "sinew/energies/models/determinant_derivatives.hpp"
 #include "sinew/energies/models/fast_rotation_variant_svd.hpp"
 #include "sinew/energies/models/isotropic_batch.hpp"
+#include "sinew/energies/models/plane_derivatives.hpp"
 #include "sinew/energies/models/psd_projection.hpp"
 #include "sinew/energies/models/svd_frame_stiffness.hpp"
 
@@ -156,19 +157,6 @@ Hessian<2> plane_stiffness(const PlaneState& st)
                 H.block<2, 2>(2 * j, 2 * l) += (fiber.a(j) * fiber.a(l)) * block;
     }
     return H;
-}
-
-/// Projection::clamp in 2D: H unchanged when H + 1e-12 max|Hᵢⱼ| I has a
-/// Cholesky factorization (PSD up to rounding), otherwise the nearest PSD
-/// matrix, V diag(max(λ, 0)) Vᵀ from the eigen-decomposition of the 4×4.
-void clamp_plane(Hessian<2>& H)
-{
-    Hessian<2> shifted = H;
-    shifted.diagonal().array() += 1e-12 * H.cwiseAbs().maxCoeff();
-    if (Eigen::LLT<Hessian<2>>(shifted).info() == Eigen::Success)
-        return;
-    const Eigen::SelfAdjointEigenSolver<Hessian<2>> eigen(H);
-    H = eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).asDiagonal() * eigen.eigenvectors().transpose();
 }
 
 // ---- Volume elements (Dim = 3), kSimdLanes deformation gradients side by side. ----
@@ -453,7 +441,7 @@ void QrAnisotropic<Dim>::evaluate_batch(int count, const Deformation* F, const P
             if (dPdF) {
                 dPdF[k] = plane_stiffness(st);
                 if (projection == Projection::clamp)
-                    clamp_plane(dPdF[k]);
+                    clamp_plane_stiffness(dPdF[k]);
             }
             psi[k] = plane_energy(st, F[k]);
         }

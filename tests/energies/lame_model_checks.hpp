@@ -86,22 +86,23 @@ inline Stiffness9 linear_elasticity(double mu, double lambda)
     return C;
 }
 
-/// Checks ψ → P → ∂P/∂F against central differences at F.
+/// Checks ψ → P → ∂P/∂F against central differences at F (3×3 or 2×2).
 /// Tolerance 1e-6 relative to max(1, |FD|∞): with step h = 1e-6·max(1, |F|∞) the
 /// truncation error is O(h²) ≈ 1e-12 relative and the rounding error
 /// eps·|ψ|/h ≈ 1e-10 relative (|ψ| ≲ 10|P| here), so 1e-6 leaves a margin of
 /// 10⁴ while any wrong term (an O(1) relative error) fails.
 template <typename Model>
-void check_derivatives(const Model& model, const Eigen::Matrix3d& F, const Model3d::Point& point)
+void check_derivatives(const Model& model, const typename Model::Deformation& F, const typename Model::Point& point)
 {
-    Model3d::Stress P;
-    Stiffness9 H;
+    constexpr int Dim = Model::kRows;
+    typename Model::Stress P;
+    typename Model::Stiffness H;
     const double psi = model.evaluate(F, point, &P, &H, Projection::none);
     REQUIRE(std::isfinite(psi));
     REQUIRE(P.allFinite());
     REQUIRE(H.allFinite());
-    const Model3d::Stress P_fd = finite_difference_stress<3, 3>(model, F, point, 1e-6);
-    const Stiffness9 H_fd = finite_difference_stiffness<3, 3>(model, F, point, 1e-6);
+    const typename Model::Stress P_fd = finite_difference_stress<Dim, Dim>(model, F, point, 1e-6);
+    const typename Model::Stiffness H_fd = finite_difference_stiffness<Dim, Dim>(model, F, point, 1e-6);
     REQUIRE(P_fd.allFinite());
     REQUIRE(H_fd.allFinite());
     REQUIRE(H_fd.norm() > 0.0);
