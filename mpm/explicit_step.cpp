@@ -13,7 +13,7 @@ namespace {
 template <int Dim>
 std::string add_stress_impulses(const Particles<Dim>& particles,
                                 const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
-                                const ExplicitStepSettings<Dim>& settings, SparseGrid<Dim>& grid)
+                                const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid)
 {
     using Index = typename SparseGrid<Dim>::Index;
     using Matrix = typename Particles<Dim>::Matrix;
@@ -41,46 +41,36 @@ std::string add_stress_impulses(const Particles<Dim>& particles,
     return {};
 }
 
-/// v_i = (m v)_i / m_i + Δt g where m_i > 0, then the walls' and colliders' conditions.
+/// v_i = (m v)_i / m_i + Δt g where m_i > 0.
 template <int Dim>
-void update_grid_velocity(const ExplicitStepSettings<Dim>& settings, SparseGrid<Dim>& grid)
+void update_grid_velocity(const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid)
 {
     for (int slot = 0; slot < grid.slots(); ++slot) {
         const auto s = static_cast<std::size_t>(slot);
         if (grid.mass[s] > 0.0)
             grid.velocity[s] = grid.momentum[s] / grid.mass[s] + settings.time_step * settings.gravity;
     }
-    if (settings.walls)
-        apply_walls(*settings.walls, grid);
-    apply_colliders(settings.colliders, grid);
 }
 
 } // namespace
 
 template <int Dim>
 ExplicitStepReport explicit_step(Particles<Dim>& particles, const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
-                                 const ExplicitStepSettings<Dim>& settings, SparseGrid<Dim>& grid)
+                                 const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid)
 {
-    using Matrix = typename Particles<Dim>::Matrix;
     ExplicitStepReport report;
     particles_to_grid(particles, settings.transfer, grid);
     report.failure = add_stress_impulses(particles, models, settings, grid);
     if (!report.failure.empty())
         return report;
     update_grid_velocity(settings, grid);
-    grid_to_particles(grid, settings.transfer, particles);
-    const double h = settings.time_step;
-    for (int p = 0; p < particles.size(); ++p) {
-        const auto i = static_cast<std::size_t>(p);
-        particles.x[i] += h * particles.v[i];
-        particles.F[i] = (Matrix::Identity() + h * particles.C[i]) * particles.F[i];  // Fⁿ⁺¹ = (I + Δt ∇v) Fⁿ
-    }
+    finish_step(settings, grid, particles);
     return report;
 }
 
 template ExplicitStepReport explicit_step<2>(Particles<2>&, const std::vector<const ConstitutiveModel<2, 2>*>&,
-                                             const ExplicitStepSettings<2>&, SparseGrid<2>&);
+                                             const MpmStepSettings<2>&, SparseGrid<2>&);
 template ExplicitStepReport explicit_step<3>(Particles<3>&, const std::vector<const ConstitutiveModel<3, 3>*>&,
-                                             const ExplicitStepSettings<3>&, SparseGrid<3>&);
+                                             const MpmStepSettings<3>&, SparseGrid<3>&);
 
 } // namespace sinew

@@ -1,27 +1,11 @@
 #pragma once
 #include "sinew/energies/models/constitutive_model.hpp"
-#include "sinew/mpm/particles.hpp"
-#include "sinew/mpm/sparse_grid.hpp"
-#include "sinew/mpm/grid_colliders.hpp"
-#include "sinew/mpm/grid_walls.hpp"
-#include "sinew/mpm/transfers.hpp"
+#include "sinew/mpm/step_settings.hpp"
 
-#include <optional>
 #include <string>
 #include <vector>
 
 namespace sinew {
-
-template <int Dim>
-struct ExplicitStepSettings {
-    double time_step = 1e-4;  ///< Δt, s
-    TransferSettings transfer;
-    Eigen::Matrix<double, Dim, 1> gravity = Eigen::Matrix<double, Dim, 1>::Zero();
-    /// Walls around the domain, applied to the grid velocity (none by default).
-    std::optional<GridWalls<Dim>> walls;
-    /// Rigid bodies acting on the grid after the walls (none by default).
-    std::vector<GridCollider<Dim>> colliders;
-};
 
 /// How a step went: empty `failure` when every particle's stress was finite.
 struct ExplicitStepReport {
@@ -34,14 +18,13 @@ struct ExplicitStepReport {
 ///   grid forces, the MLS stress divergence
 ///     f_i = −Σ_p V_p⁰ P(F_p) F_pᵀ D_p⁻¹ (x_i − x_p) w_ip;
 ///   grid update v_i ← ((m v)_i + Δt f_i)/m_i + Δt g on nodes with mass,
-///   then the walls' and the colliders' conditions;
-///   grid_to_particles: v_p, C_p;
-///   advection x_p ← x_p + Δt v_p and F_p ← (I + Δt C_p) F_p.
+///   then finish_step: the walls' and the colliders' conditions,
+///   grid_to_particles (v_p, C_p) and advection of x_p and F_p.
 /// P comes from models[material_p] at the particle's material point. A
 /// particle whose ψ or P is not finite (an inverted F for a model undefined
 /// there) leaves the particles as they were and names itself in `failure`.
 template <int Dim>
 ExplicitStepReport explicit_step(Particles<Dim>& particles, const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
-                                 const ExplicitStepSettings<Dim>& settings, SparseGrid<Dim>& grid);
+                                 const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid);
 
 } // namespace sinew

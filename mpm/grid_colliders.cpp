@@ -3,26 +3,36 @@
 namespace sinew {
 
 template <int Dim>
-void apply_colliders(const std::vector<GridCollider<Dim>>& colliders, SparseGrid<Dim>& grid)
+void add_collider_contacts(const std::vector<GridCollider<Dim>>& colliders, const Eigen::Matrix<double, Dim, 1>& x,
+                           double dx, std::vector<NodeContact<Dim>>& contacts)
 {
-    using Vector = Eigen::Matrix<double, Dim, 1>;
-    for (const GridCollider<Dim>& collider : colliders)
-        for (int slot = 0; slot < grid.slots(); ++slot) {
-            const auto s = static_cast<std::size_t>(slot);
-            if (!(grid.mass[s] > 0.0))
-                continue;
-            Eigen::Vector3d x = Eigen::Vector3d::Zero();  // a 2D node as (x, y, 0)
-            x.head<Dim>() = grid.position(slot);
-            const BodyDistance d = collider.body->distance(x);
-            if (!(d.distance < collider.thickness * grid.dx()))
-                continue;
-            const Vector n = d.gradient.head<Dim>();
-            grid.velocity[s] = n.squaredNorm() > 0.0
-                                   ? conditioned_velocity<Dim>(collider.condition, grid.velocity[s], collider.velocity, n)
-                                   : collider.velocity;
-        }
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();  // a 2D node as (x, y, 0)
+    point.head<Dim>() = x;
+    for (const GridCollider<Dim>& collider : colliders) {
+        const BodyDistance d = collider.body->distance(point);
+        if (d.distance < collider.thickness * dx)
+            contacts.push_back({collider.condition, collider.velocity, d.gradient.head<Dim>()});
+    }
 }
 
+template <int Dim>
+void apply_colliders(const std::vector<GridCollider<Dim>>& colliders, SparseGrid<Dim>& grid)
+{
+    std::vector<NodeContact<Dim>> contacts;
+    for (int slot = 0; slot < grid.slots(); ++slot) {
+        const auto s = static_cast<std::size_t>(slot);
+        if (!(grid.mass[s] > 0.0))
+            continue;
+        contacts.clear();
+        add_collider_contacts(colliders, grid.position(slot), grid.dx(), contacts);
+        grid.velocity[s] = conditioned_velocity(contacts, grid.velocity[s]);
+    }
+}
+
+template void add_collider_contacts<2>(const std::vector<GridCollider<2>>&, const Eigen::Vector2d&, double,
+                                       std::vector<NodeContact<2>>&);
+template void add_collider_contacts<3>(const std::vector<GridCollider<3>>&, const Eigen::Vector3d&, double,
+                                       std::vector<NodeContact<3>>&);
 template void apply_colliders<2>(const std::vector<GridCollider<2>>&, SparseGrid<2>&);
 template void apply_colliders<3>(const std::vector<GridCollider<3>>&, SparseGrid<3>&);
 

@@ -22,6 +22,13 @@ struct GridCollider {
     double thickness = 1.0;
 };
 
+/// Appends the colliders holding the node at x (grid spacing dx) to
+/// `contacts`, in their order: those with φ(x) < thickness · dx, with
+/// n = ∇φ(x) (zero where ∇φ vanishes, a ball's centre).
+template <int Dim>
+void add_collider_contacts(const std::vector<GridCollider<Dim>>& colliders, const Eigen::Matrix<double, Dim, 1>& x,
+                           double dx, std::vector<NodeContact<Dim>>& contacts);
+
 /// Every node with mass inside a collider or within its band,
 /// φ(x_i) < thickness · dx, takes its condition
 /// against the collider's velocity with n = ∇φ(x_i) (conditioned_velocity);

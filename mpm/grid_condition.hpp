@@ -2,6 +2,7 @@
 #include <Eigen/Core>
 
 #include <string>
+#include <vector>
 
 namespace sinew {
 
@@ -10,6 +11,16 @@ enum class GridCondition {
     sticky,   ///< v = v_b, the obstacle's velocity
     slip,     ///< the normal part of v − v_b removed
     separate  ///< the normal part of v − v_b removed only when it points into the obstacle
+};
+
+/// One wall or collider holding one node: its condition, the obstacle's
+/// velocity v_b and the unit normal n out of the obstacle at the node (zero
+/// where the obstacle has none, a ball's centre: the node is then held at v_b).
+template <int Dim>
+struct NodeContact {
+    GridCondition condition = GridCondition::sticky;
+    Eigen::Matrix<double, Dim, 1> velocity = Eigen::Matrix<double, Dim, 1>::Zero();
+    Eigen::Matrix<double, Dim, 1> normal = Eigen::Matrix<double, Dim, 1>::Zero();
 };
 
 /// "sticky", "slip", "separate"; InputError naming the choices otherwise.
@@ -31,6 +42,19 @@ Eigen::Matrix<double, Dim, 1> conditioned_velocity(GridCondition condition, cons
     case GridCondition::slip: return v_b + r - approach * n;
     case GridCondition::separate: return approach < 0.0 ? Eigen::Matrix<double, Dim, 1>(v_b + r - approach * n) : v;
     }
+    return v;
+}
+
+/// v after each contact's condition in turn (conditioned_velocity; held at
+/// v_b where the normal is zero).
+template <int Dim>
+Eigen::Matrix<double, Dim, 1> conditioned_velocity(const std::vector<NodeContact<Dim>>& contacts,
+                                                   Eigen::Matrix<double, Dim, 1> v)
+{
+    for (const NodeContact<Dim>& contact : contacts)
+        v = contact.normal.squaredNorm() > 0.0
+                ? conditioned_velocity<Dim>(contact.condition, v, contact.velocity, contact.normal)
+                : contact.velocity;
     return v;
 }
 

@@ -3,6 +3,7 @@
 #include "sinew/mpm/sparse_grid.hpp"
 
 #include <array>
+#include <vector>
 
 namespace sinew {
 
@@ -24,6 +25,12 @@ struct GridWalls {
     static GridWalls box(const Eigen::Matrix<double, Dim, 1>& lower, const Eigen::Matrix<double, Dim, 1>& upper,
                          GridCondition condition);
 };
+
+/// Appends the walls holding the node at x (grid spacing dx) to `contacts`,
+/// lower face before upper, axis by axis.
+template <int Dim>
+void add_wall_contacts(const GridWalls<Dim>& walls, const Eigen::Matrix<double, Dim, 1>& x, double dx,
+                       std::vector<NodeContact<Dim>>& contacts);
 
 /// Applies the walls to the velocity of every node with mass.
 template <int Dim>

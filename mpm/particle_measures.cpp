@@ -2,6 +2,9 @@
 
 #include <Eigen/Geometry>
 
+#include <cmath>
+#include <limits>
+
 namespace sinew {
 namespace {
 
@@ -61,6 +64,20 @@ double kinetic_energy(const Particles<Dim>& particles)
 }
 
 template <int Dim>
+double elastic_energy(const Particles<Dim>& particles, const std::vector<const ConstitutiveModel<Dim, Dim>*>& models)
+{
+    double e = 0.0;
+    for (int p = 0; p < particles.size(); ++p) {
+        const auto i = static_cast<std::size_t>(p);
+        const double psi = models.at(static_cast<std::size_t>(particles.material[i]))->energy(particles.F[i], particles.point[i]);
+        if (!std::isfinite(psi))
+            return std::numeric_limits<double>::infinity();
+        e += particles.volume[i] * psi;  // V_p⁰ ψ(F_p)
+    }
+    return e;
+}
+
+template <int Dim>
 double total_mass(const SparseGrid<Dim>& grid)
 {
     double m = 0.0;
@@ -97,6 +114,8 @@ template AngularMomentum angular_momentum<2>(const Particles<2>&, double);
 template AngularMomentum angular_momentum<3>(const Particles<3>&, double);
 template double kinetic_energy<2>(const Particles<2>&);
 template double kinetic_energy<3>(const Particles<3>&);
+template double elastic_energy<2>(const Particles<2>&, const std::vector<const ConstitutiveModel<2, 2>*>&);
+template double elastic_energy<3>(const Particles<3>&, const std::vector<const ConstitutiveModel<3, 3>*>&);
 template double total_mass<2>(const SparseGrid<2>&);
 template double total_mass<3>(const SparseGrid<3>&);
 template Eigen::Matrix<double, 2, 1> linear_momentum<2>(const SparseGrid<2>&);

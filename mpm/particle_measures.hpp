@@ -1,6 +1,9 @@
 #pragma once
+#include "sinew/energies/models/constitutive_model.hpp"
 #include "sinew/mpm/particles.hpp"
 #include "sinew/mpm/sparse_grid.hpp"
+
+#include <vector>
 
 namespace sinew {
 
@@ -19,6 +22,10 @@ AngularMomentum angular_momentum(const Particles<Dim>& particles, double inertia
 /// Σ_p ½ m_p |v_p|²
 template <int Dim>
 double kinetic_energy(const Particles<Dim>& particles);
+/// Σ_p V_p⁰ ψ_p(F_p), ψ_p the model of the particle's material
+/// (+infinity where a ψ is not finite).
+template <int Dim>
+double elastic_energy(const Particles<Dim>& particles, const std::vector<const ConstitutiveModel<Dim, Dim>*>& models);
 
 template <int Dim>
 double total_mass(const SparseGrid<Dim>& grid);

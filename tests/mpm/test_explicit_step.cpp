@@ -40,7 +40,7 @@ TEST_CASE("explicit MPM step: an unstressed block falls as symplectic Euler says
     const std::vector<const Model3d*> models{model.get()};
     Particles<3> particles = block(0.1);
     const Particles<3> start = particles;
-    ExplicitStepSettings<3> settings;
+    MpmStepSettings<3> settings;
     settings.time_step = 1e-3;
     settings.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
     SparseGrid<3> grid(0.1);
@@ -73,7 +73,7 @@ TEST_CASE("explicit MPM step: a deformed spinning block conserves linear and API
         particles.F[i] = stretch;  // released from a uniform stretch and shear
         particles.v[i] = drift + omega.cross(particles.x[i] - center);
     }
-    ExplicitStepSettings<3> settings;
+    MpmStepSettings<3> settings;
     settings.time_step = 1e-4;
     SparseGrid<3> grid(dx);
     const double D = apic_inertia_factor(settings.transfer.order) * dx * dx;
@@ -100,7 +100,7 @@ TEST_CASE("explicit MPM step: a stress that is not finite ends the step and name
     particles.F[5](0, 0) = std::numeric_limits<double>::quiet_NaN();
     const Particles<3> before = particles;
     SparseGrid<3> grid(0.1);
-    const ExplicitStepReport report = explicit_step(particles, models, ExplicitStepSettings<3>{}, grid);
+    const ExplicitStepReport report = explicit_step(particles, models, MpmStepSettings<3>{}, grid);
     CHECK_THAT(report.failure, Catch::Contains("particle 5"));
     CHECK(particles.x == before.x);
 }

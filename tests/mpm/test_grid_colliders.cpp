@@ -76,7 +76,7 @@ TEST_CASE("grid colliders: a block dropped on a ball does not pass into it")
     const Eigen::Vector3d center(1.2, 1.2, 0.5);
     const double radius = 0.3;
     Particles<3> particles = falling_block(Eigen::Vector3d(1.0, 1.0, 1.0), Eigen::Vector3d(0.0, 0.0, -1.0));
-    ExplicitStepSettings<3> settings;
+    MpmStepSettings<3> settings;
     settings.time_step = 1e-3;
     settings.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
     settings.colliders.push_back({ball(center, radius), GridCondition::separate, Eigen::Vector3d::Zero(), 1.0});
@@ -101,7 +101,7 @@ TEST_CASE("grid colliders: a rising floor lifts a block and carries it at its ow
     Particles<3> particles = falling_block(Eigen::Vector3d(1.0, 1.0, 1.0), Eigen::Vector3d::Zero());
     const auto floor = floor_plane(0.6);
     const double rise = 0.5;  // m/s
-    ExplicitStepSettings<3> settings;
+    MpmStepSettings<3> settings;
     settings.time_step = 1e-3;
     settings.colliders.push_back({floor, GridCondition::sticky, Eigen::Vector3d(0.0, 0.0, rise), 1.0});
     SparseGrid<3> grid(0.1);

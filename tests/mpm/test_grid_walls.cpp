@@ -56,7 +56,7 @@ TEST_CASE("grid walls: a block dropped on a separating floor bounces off it and 
             for (int k = 0; k < 8; ++k)
                 particles.add(Eigen::Vector3d(1.0 + (i + 0.5) * spacing, 1.0 + (j + 0.5) * spacing, 0.6 + (k + 0.5) * spacing),
                               Eigen::Vector3d(0.5, 0.0, -1.0), 1000.0 * volume, volume);
-    ExplicitStepSettings<3> settings;
+    MpmStepSettings<3> settings;
     settings.time_step = 1e-3;
     settings.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
     settings.walls = GridWalls<3>::box(Eigen::Vector3d(-5.0, -5.0, 0.0), Eigen::Vector3d(5.0, 5.0, 5.0),

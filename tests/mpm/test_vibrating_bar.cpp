@@ -35,7 +35,7 @@ double bar_error(int cells, TransferScheme scheme)
                 particles.add(x, Eigen::Vector3d(kAmplitude * std::sin(k * x.x()), 0.0, 0.0), kDensity * volume, volume);
                 particles.C.back()(0, 0) = kAmplitude * k * std::cos(k * x.x());  // ∂v_x/∂x
             }
-    ExplicitStepSettings<3> settings;
+    MpmStepSettings<3> settings;
     settings.transfer.scheme = scheme;
     settings.transfer.flip_ratio = 1.0;
     // The nodes at x ≤ 0 and x ≥ L are held: walls half a cell beyond, one cell thick.

@@ -1,0 +1,304 @@
+#include "sinew/mpm/grid_velocity_nlp.hpp"
+
+#include "sinew/core/input_error.hpp"
+#include "sinew/mpm/transfers.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace sinew {
+namespace {
+
+int power(int base, int exponent)
+{
+    int result = 1;
+    for (int k = 0; k < exponent; ++k)
+        result *= base;
+    return result;
+}
+
+} // namespace
+
+template <int Dim>
+GridVelocityNlp<Dim>::GridVelocityNlp(const Particles<Dim>& particles,
+                                      const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
+                                      const SparseGrid<Dim>& grid, const MpmStepSettings<Dim>& settings)
+    : particles_(particles), models_(models), time_step_(settings.time_step)
+{
+    if (!(time_step_ > 0.0) || !std::isfinite(time_step_))
+        throw InputError("the implicit MPM step needs a finite time step > 0, not " + std::to_string(time_step_));
+    for (int p = 0; p < particles.size(); ++p) {
+        const int material = particles.material[static_cast<std::size_t>(p)];
+        if (material < 0 || material >= static_cast<int>(models.size()) || !models[static_cast<std::size_t>(material)])
+            throw InputError("particle " + std::to_string(p) + " has material " + std::to_string(material) +
+                             ", which has no model (" + std::to_string(models.size()) + " given)");
+    }
+    build_nodes(grid, settings);
+    build_couplings(grid, settings.transfer.order);
+    build_pattern();
+}
+
+template <int Dim>
+void GridVelocityNlp<Dim>::build_nodes(const SparseGrid<Dim>& grid, const MpmStepSettings<Dim>& settings)
+{
+    for (int slot = 0; slot < grid.slots(); ++slot) {
+        const auto s = static_cast<std::size_t>(slot);
+        if (!(grid.mass[s] > 0.0))
+            continue;
+        const NodeVector target = grid.momentum[s] / grid.mass[s] + time_step_ * settings.gravity;  // v* = (m v)/m + Δt g
+        node_slot_.push_back(slot);
+        node_index_.push_back(grid.node(slot));
+        node_mass_.push_back(grid.mass[s]);
+        target_.push_back(target);
+        frames_.push_back(node_velocity_frame(node_contacts(settings, grid.position(slot), grid.dx()), target));
+        first_variable_.push_back(variables_);
+        variables_ += static_cast<int>(frames_.back().basis.cols());
+    }
+    velocities_.assign(node_slot_.size(), NodeVector::Zero());
+}
+
+template <int Dim>
+void GridVelocityNlp<Dim>::build_couplings(const SparseGrid<Dim>& grid, SplineOrder order)
+{
+    using Index = typename SparseGrid<Dim>::Index;
+    const int width = stencil_width(order);
+    stencil_nodes_ = power(width, Dim);
+    offset_width_ = 2 * width - 1;
+    std::vector<int> node_of_slot(static_cast<std::size_t>(grid.slots()), -1);
+    for (int k = 0; k < nodes(); ++k)
+        node_of_slot[static_cast<std::size_t>(slot(k))] = k;
+    const double dx = grid.dx();
+    const double inverse_D = 1.0 / (apic_inertia_factor(order) * dx * dx);  // D_p⁻¹ = (σ dx²)⁻¹ I
+    couplings_.assign(static_cast<std::size_t>(particles_.size()) * static_cast<std::size_t>(stencil_nodes_), {});
+    for (int p = 0; p < particles_.size(); ++p) {
+        const auto i = static_cast<std::size_t>(p);
+        const BSplineStencil<Dim> stencil = checked_stencil(particles_, p, dx, order);
+        std::size_t k = i * static_cast<std::size_t>(stencil_nodes_);
+        stencil.for_each_offset([&](const Index& offset) {
+            Coupling& coupling = couplings_[k++];
+            const Index node = stencil.base + offset;
+            const int found = grid.find(node);
+            if (found < 0 || node_of_slot[static_cast<std::size_t>(found)] < 0)
+                return;
+            coupling.node = node_of_slot[static_cast<std::size_t>(found)];
+            // q_ip = w_ip D⁻¹ (x_i − x_p),  b_ip = Fⁿᵀ q_ip
+            const NodeVector q = stencil.weight(offset) * inverse_D * (node.template cast<double>() * dx - particles_.x[i]);
+            coupling.b = particles_.F[i].transpose() * q;
+        });
+    }
+}
+
+template <int Dim>
+int GridVelocityNlp<Dim>::table_entry(int a, int b) const
+{
+    const int reach = (offset_width_ - 1) / 2;
+    int linear = 0;
+    for (int d = 0; d < Dim; ++d)
+        linear = linear * offset_width_ +
+                 (node_index_[static_cast<std::size_t>(b)][d] - node_index_[static_cast<std::size_t>(a)][d] + reach);
+    return a * power(offset_width_, Dim) + linear;
+}
+
+template <int Dim>
+void GridVelocityNlp<Dim>::build_pattern()
+{
+    // Mark every coupled pair a ≥ b with its b; then number the blocks by a, then offset.
+    constexpr int kUnmarked = -1;
+    const int offsets = power(offset_width_, Dim);
+    std::vector<int> partner(static_cast<std::size_t>(nodes()) * static_cast<std::size_t>(offsets), kUnmarked);
+    for (int a = 0; a < nodes(); ++a)
+        partner[static_cast<std::size_t>(table_entry(a, a))] = a;
+    for (int p = 0; p < particles_.size(); ++p) {
+        const Coupling* c = &couplings_[static_cast<std::size_t>(p) * static_cast<std::size_t>(stencil_nodes_)];
+        for (int s = 0; s < stencil_nodes_; ++s)
+            for (int t = 0; t < stencil_nodes_; ++t)
+                if (c[s].node >= 0 && c[t].node >= 0 && c[s].node > c[t].node)
+                    partner[static_cast<std::size_t>(table_entry(c[s].node, c[t].node))] = c[t].node;
+    }
+    block_table_.assign(partner.size(), -1);
+    pattern_ = SparsityPattern();
+    for (int a = 0; a < nodes(); ++a) {
+        for (int o = 0; o < offsets; ++o) {
+            const auto entry = static_cast<std::size_t>(a) * static_cast<std::size_t>(offsets) + static_cast<std::size_t>(o);
+            const int b = partner[entry];
+            if (b == kUnmarked || free_components(a) == 0 || free_components(b) == 0)
+                continue;
+            block_table_[entry] = pattern_.nonzeros();
+            const int row0 = first_variable_[static_cast<std::size_t>(a)];
+            const int col0 = first_variable_[static_cast<std::size_t>(b)];
+            for (int n = 0; n < free_components(a); ++n)
+                for (int m = 0; m < (a == b ? n + 1 : free_components(b)); ++m)
+                    pattern_.add(row0 + n, col0 + m);
+        }
+    }
+}
+
+template <int Dim>
+void GridVelocityNlp<Dim>::add_block(int a, int b, const Matrix& H_ab, VectorRef values) const
+{
+    const int start = block_table_[static_cast<std::size_t>(table_entry(a, b))];
+    if (start < 0)
+        return;  // a node held at v_b: no unknowns
+    const auto& Ba = frames_[static_cast<std::size_t>(a)].basis;
+    const auto& Bb = frames_[static_cast<std::size_t>(b)].basis;
+    const Eigen::MatrixXd reduced = Ba.transpose() * H_ab * Bb;  // B_aᵀ H_ab B_b
+    int k = start;
+    for (int n = 0; n < reduced.rows(); ++n)
+        for (int m = 0; m < (a == b ? n + 1 : reduced.cols()); ++m)
+            values[k++] += reduced(n, m);
+}
+
+template <int Dim>
+Eigen::VectorXd GridVelocityNlp<Dim>::starting_point() const
+{
+    Eigen::VectorXd y(num_variables());
+    for (int k = 0; k < nodes(); ++k) {
+        const auto i = static_cast<std::size_t>(k);
+        const NodeVelocityFrame<Dim>& frame = frames_[i];
+        y.segment(first_variable_[i], frame.basis.cols()) = frame.basis.transpose() * (target_[i] - frame.offset);
+    }
+    return y;
+}
+
+template <int Dim>
+typename GridVelocityNlp<Dim>::NodeVector GridVelocityNlp<Dim>::velocity(int node, ConstVectorRef y) const
+{
+    const auto i = static_cast<std::size_t>(node);
+    const NodeVelocityFrame<Dim>& frame = frames_[i];
+    return frame.offset + frame.basis * y.segment(first_variable_[i], frame.basis.cols());  // v = offset + B y
+}
+
+template <int Dim>
+void GridVelocityNlp<Dim>::update_velocities(ConstVectorRef y)
+{
+    for (int k = 0; k < nodes(); ++k)
+        velocities_[static_cast<std::size_t>(k)] = velocity(k, y);
+}
+
+template <int Dim>
+typename GridVelocityNlp<Dim>::Matrix GridVelocityNlp<Dim>::deformation_at_velocities(int particle) const
+{
+    const auto i = static_cast<std::size_t>(particle);
+    Matrix F = particles_.F[i];
+    const Coupling* c = &couplings_[i * static_cast<std::size_t>(stencil_nodes_)];
+    for (int t = 0; t < stencil_nodes_; ++t)
+        if (c[t].node >= 0)
+            F += time_step_ * velocities_[static_cast<std::size_t>(c[t].node)] * c[t].b.transpose();  // F = Fⁿ + Δt Σ v_i b_ipᵀ
+    return F;
+}
+
+template <int Dim>
+typename GridVelocityNlp<Dim>::Matrix GridVelocityNlp<Dim>::deformation(int particle, ConstVectorRef y) const
+{
+    const auto i = static_cast<std::size_t>(particle);
+    Matrix F = particles_.F[i];
+    const Coupling* c = &couplings_[i * static_cast<std::size_t>(stencil_nodes_)];
+    for (int t = 0; t < stencil_nodes_; ++t)
+        if (c[t].node >= 0)
+            F += time_step_ * velocity(c[t].node, y) * c[t].b.transpose();
+    return F;
+}
+
+template <int Dim>
+double GridVelocityNlp<Dim>::objective(ConstVectorRef y)
+{
+    update_velocities(y);
+    double E = 0.0;
+    for (int k = 0; k < nodes(); ++k) {
+        const auto i = static_cast<std::size_t>(k);
+        E += 0.5 * node_mass_[i] * (velocities_[i] - target_[i]).squaredNorm();  // ½ m ‖v − v*‖²
+    }
+    for (int p = 0; p < particles_.size(); ++p) {
+        const auto i = static_cast<std::size_t>(p);
+        const double psi = models_[static_cast<std::size_t>(particles_.material[i])]->energy(deformation_at_velocities(p),
+                                                                                           particles_.point[i]);
+        if (!std::isfinite(psi))
+            return kInfinity;
+        E += particles_.volume[i] * psi;  // V_p⁰ ψ(F_p(v))
+    }
+    return E;
+}
+
+template <int Dim>
+void GridVelocityNlp<Dim>::gradient(ConstVectorRef y, VectorRef grad)
+{
+    update_velocities(y);
+    std::vector<NodeVector> gradient_v(node_slot_.size());
+    for (int k = 0; k < nodes(); ++k) {
+        const auto i = static_cast<std::size_t>(k);
+        gradient_v[i] = node_mass_[i] * (velocities_[i] - target_[i]);  // m (v − v*)
+    }
+    for (int p = 0; p < particles_.size(); ++p) {
+        const auto i = static_cast<std::size_t>(p);
+        Matrix P;
+        models_[static_cast<std::size_t>(particles_.material[i])]->evaluate(deformation_at_velocities(p),
+                                                                            particles_.point[i], &P, nullptr,
+                                                                            Projection::none);
+        const Matrix scaled = time_step_ * particles_.volume[i] * P;  // Δt V_p⁰ P
+        const Coupling* c = &couplings_[i * static_cast<std::size_t>(stencil_nodes_)];
+        for (int t = 0; t < stencil_nodes_; ++t)
+            if (c[t].node >= 0)
+                gradient_v[static_cast<std::size_t>(c[t].node)] += scaled * c[t].b;  // Δt V_p⁰ P b_ip
+    }
+    for (int k = 0; k < nodes(); ++k) {
+        const auto i = static_cast<std::size_t>(k);
+        grad.segment(first_variable_[i], frames_[i].basis.cols()) = frames_[i].basis.transpose() * gradient_v[i];  // Bᵀ ∂E/∂v
+    }
+}
+
+template <int Dim>
+void GridVelocityNlp<Dim>::assemble_hessian(ConstVectorRef y, double sigma, Projection projection, VectorRef values)
+{
+    using Stiffness = typename ConstitutiveModel<Dim, Dim>::Stiffness;
+    using Lifted = Eigen::Matrix<double, Dim * Dim, Dim>;  // (∂P/∂F) J_t
+    update_velocities(y);
+    values.setZero();
+    for (int a = 0; a < nodes(); ++a)
+        add_block(a, a, sigma * node_mass_[static_cast<std::size_t>(a)] * Matrix::Identity(), values);  // m_i I
+    std::vector<Lifted> lifted(static_cast<std::size_t>(stencil_nodes_));
+    for (int p = 0; p < particles_.size(); ++p) {
+        const auto i = static_cast<std::size_t>(p);
+        Stiffness K;
+        models_[static_cast<std::size_t>(particles_.material[i])]->evaluate(deformation_at_velocities(p),
+                                                                            particles_.point[i], nullptr, &K, projection);
+        const double scale = sigma * time_step_ * time_step_ * particles_.volume[i];  // σ Δt² V_p⁰
+        const Coupling* c = &couplings_[i * static_cast<std::size_t>(stencil_nodes_)];
+        for (int t = 0; t < stencil_nodes_; ++t) {
+            // (K J_t)(:, col) = Σ_l K(:, col + D l) b_t,l
+            Lifted& KJ = lifted[static_cast<std::size_t>(t)];
+            KJ.setZero();
+            for (int col = 0; col < Dim; ++col)
+                for (int l = 0; l < Dim; ++l)
+                    KJ.col(col) += c[t].b[l] * K.col(col + Dim * l);
+        }
+        for (int s = 0; s < stencil_nodes_; ++s) {
+            for (int t = 0; t < stencil_nodes_; ++t) {
+                if (c[s].node < 0 || c[t].node < 0 || c[s].node < c[t].node)
+                    continue;
+                // (J_sᵀ K J_t)(n, col) = Σ_l b_s,l (K J_t)(n + D l, col)
+                const Lifted& KJ = lifted[static_cast<std::size_t>(t)];
+                Matrix H = Matrix::Zero();
+                for (int l = 0; l < Dim; ++l)
+                    H += c[s].b[l] * KJ.template middleRows<Dim>(Dim * l);
+                add_block(c[s].node, c[t].node, scale * H, values);
+            }
+        }
+    }
+}
+
+template <int Dim>
+void GridVelocityNlp<Dim>::hessian_values(ConstVectorRef y, double sigma, ConstVectorRef, VectorRef values)
+{
+    assemble_hessian(y, sigma, Projection::none, values);
+}
+
+template <int Dim>
+void GridVelocityNlp<Dim>::projected_hessian_values(ConstVectorRef y, double sigma, ConstVectorRef, VectorRef values)
+{
+    assemble_hessian(y, sigma, Projection::clamp, values);
+}
+
+template class GridVelocityNlp<2>;
+template class GridVelocityNlp<3>;
+
+} // namespace sinew
