@@ -54,6 +54,8 @@ void add_hessian_command(CLI::App& app, int& exit_code)
         std::unique_ptr<Nlp> nlp = std::filesystem::path(flags->problem).extension() == ".json"
                                        ? std::move(read_scene_file(flags->problem).problem)
                                        : find_builtin_problem(flags->problem).make();
+        if (!nlp)
+            throw InputError(flags->problem + ": an mpm scene has no single NLP to write (its steps pose one each)");
         const Projection projection =
             !flags->exact && nlp->supports(Projection::clamp) ? Projection::clamp : Projection::none;
         Eigen::VectorXd values(nlp->hessian_pattern().nonzeros());

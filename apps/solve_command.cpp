@@ -1,5 +1,6 @@
 #include "cli_options.hpp"
 #include "commands.hpp"
+#include "sinew/runs/mpm_run.hpp"
 #include "sinew/runs/output_file.hpp"
 #include "sinew/runs/result_json.hpp"
 #include "sinew/runs/scene_runner.hpp"
@@ -58,6 +59,19 @@ TimeSteppingOutcome run_time_stepping_with_progress(Scene& scene, SceneRunSettin
         std::signal(SIGINT, previous);
         throw;
     }
+}
+
+/// Runs an MPM scene with one progress line per frame on stderr (verbosity >= 1).
+MpmRunOutcome run_mpm_with_progress(const MpmScene& scene, const SceneRunSettings& settings)
+{
+    std::function<void(const MpmFrameRow&)> on_frame;
+    if (settings.options.verbosity > 0)
+        on_frame = [&scene](const MpmFrameRow& row) {
+            if (row.frame > 0)
+                std::fprintf(stderr, "sinew: frame %d of %d  t = %.6g s  %lld steps  E = %.9g  J in [%.4g, %.4g]\n",
+                             row.frame, scene.frames, row.time, row.steps, row.total_energy, row.min_J, row.max_J);
+        };
+    return run_mpm(scene, settings, on_frame);
 }
 
 } // namespace
@@ -121,6 +135,13 @@ void add_solve_command(CLI::App& app, int& exit_code)
                              ? flags->output
                              : scene.name + "-output";
         const ResolvedSceneRun run = resolve_scene_run(scene, request);
+        if (scene.mpm) {
+            const MpmRunOutcome outcome = run_mpm_with_progress(*scene.mpm, run.settings);
+            if (!flags->json.empty())
+                write_text_file(flags->json, to_json(outcome.run).dump(2) + "\n");
+            exit_code = outcome.converged ? 0 : 3;
+            return;
+        }
         check_solve(*scene.problem, run.settings.solver, run.settings.options);
         for (const std::string& note : run.notes)
             std::cerr << "sinew: note: " << note << "\n";

@@ -1,6 +1,7 @@
 #include "sinew/runs/comparison_subjects.hpp"
 
 #include "sinew/core/format_number.hpp"
+#include "sinew/core/input_error.hpp"
 #include "sinew/mesh/mesh.hpp"
 #include "sinew/problems/quasistatic/builtin_scenes.hpp"
 #include "sinew/problems/quasistatic/constraint_ranks.hpp"
@@ -19,6 +20,8 @@ ComparisonSubject scene_subject(const std::function<Scene()>& make_scene, const 
     subject.make_nlp = [make_scene]() -> std::unique_ptr<Nlp> { return std::move(make_scene().problem); };
     subject.run = [make_scene, request](const ComparedStrategy& strategy, const SolverOptions& options) {
         Scene scene = make_scene();
+        if (scene.mpm)
+            throw InputError("'" + scene.name + "' is an mpm scene; compare takes scenes with a mesh (run it with sinew solve)");
         SceneRunRequest run_request = request;
         run_request.solver = strategy.solver;
         run_request.options = options;

@@ -19,6 +19,7 @@ const Settings& settings_of(const Scene& scene, const std::string& key)
 /// "solver": the scene's solver, tolerances and backend options.
 class SolverPart final : public ScenePart {
 public:
+    bool mesh_free() const override { return true; }
     std::string key() const override { return "solver"; }
     std::string doc() const override { return "how the scene asks to be solved (default projected-newton)"; }
     std::string kind() const override { return "run"; }
@@ -56,6 +57,7 @@ public:
 /// "output": the output folder and which VTU files are written.
 class OutputPart final : public ScenePart {
 public:
+    bool mesh_free() const override { return true; }
     std::string key() const override { return "output"; }
     std::string doc() const override { return "where the result goes and which VTU files are written"; }
     std::string kind() const override { return "run"; }

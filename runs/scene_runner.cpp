@@ -9,6 +9,7 @@
 #include "sinew/core/format_number.hpp"
 #include "sinew/core/input_error.hpp"
 #include "sinew/problems/quasistatic/constraint_ranks.hpp"
+#include "sinew/runs/mpm_run.hpp"
 #include "sinew/solvers/solver.hpp"
 
 #include <filesystem>
@@ -78,6 +79,10 @@ ResolvedSceneRun resolve_scene_run(const Scene& scene, const SceneRunRequest& re
 
 SceneRunOutcome run_scene(Scene& scene, const SceneRunSettings& settings)
 {
+    if (scene.mpm) {
+        const MpmRunOutcome run = run_mpm(*scene.mpm, settings);
+        return {run.converged, run.run, run.run.iterations, run.run.time_s, {}};
+    }
     if (scene.dynamics) {
         const TimeSteppingOutcome stepped = run_time_stepping(scene, settings);
         return {stepped.converged, stepped.run, stepped.total_iterations, stepped.total_time_s, {}};

@@ -61,6 +61,7 @@ ResolvedSceneRun resolve_scene_run(const Scene& scene, const SceneRunRequest& re
 /// "dynamics" is stepped in time instead (run_time_stepping,
 /// time_stepping.hpp): `last` is then the whole run as one result
 /// (TimeSteppingOutcome::run), so comparisons and benches see every step.
+/// A scene with "mpm" is run by run_mpm (mpm_run.hpp), `last` its run.
 struct SceneRunOutcome {
     bool converged = false;  ///< every load step converged
     Result last;             ///< the last step's result

@@ -4,6 +4,7 @@
 #include "sinew/runs/output_file.hpp"
 #include "sinew/runs/result_json.hpp"
 #include "sinew/runs/scene_vtu.hpp"
+#include "sinew/runs/step_gradient_target.hpp"
 
 #include "sinew/core/input_error.hpp"
 #include "sinew/mesh/pvd_writer.hpp"
@@ -95,21 +96,6 @@ void set_step_terms(Scene& scene, const TimeIntegrator& integrator, const Dynami
         scene.stiffness_damping->set_step(integrator.state().x, v_bar, predictor, g);
 }
 
-bool declares_option(const std::string& solver, const std::string& name)
-{
-    for (const OptionDeclaration& option : find_solver(solver).declared_options())
-        if (option.name == name)
-            return true;
-    return false;
-}
-
-/// Whether the run sets backend option `name` of its solver on every step:
-/// the solver declares it and the caller did not set it.
-bool step_sets(const SceneRunSettings& settings, const std::string& name)
-{
-    return declares_option(settings.solver, name) && settings.options.backend.count(name) == 0;
-}
-
 /// The largest diagonal entry of the step's Hessian ∇²(inertia + E) at x:
 /// the scale of the gradient's round-off, ε·‖x‖∞·max Hᵢᵢ (a gradient entry
 /// is a sum of terms of size Hᵢᵢ·|x|, each rounded).
@@ -137,19 +123,6 @@ double step_force_scale(Scene& scene, const TimeIntegrator& integrator)
     Eigen::VectorXd gradient(at_start.size());
     problem.gradient(at_start, gradient);
     return gradient.cwiseAbs().maxCoeff();
-}
-
-/// The stopping target of a step, for a solver that declares an absolute
-/// `gradient_target`: tol times the step's force scale, and never below the
-/// gradient's round-off, 16ε·‖x̃‖∞·max Hᵢᵢ (H at the run's start; the floors
-/// seen on the test scenes lie between 1 and 20 times ε‖x̃‖∞·max Hᵢᵢ), where
-/// Newton can only stall.
-double step_gradient_target(const TimeIntegrator& integrator, double tolerance, double force_scale,
-                            double hessian_diagonal)
-{
-    const double roundoff = 16.0 * std::numeric_limits<double>::epsilon() *
-                            integrator.predictor().cwiseAbs().maxCoeff() * hessian_diagonal;
-    return std::max(tolerance * force_scale, roundoff);
 }
 
 /// Text of x with every digit, for a backend option.
@@ -326,7 +299,8 @@ public:
             hessian_diagonal_ = largest_hessian_diagonal(scene, x0);
         if (set_target_)
             options_.backend["gradient_target"] =
-                exact_text(step_gradient_target(integrator, base_.tolerance, force_scale, hessian_diagonal_));
+                exact_text(step_gradient_target(base_.tolerance, force_scale,
+                                                    integrator.predictor().cwiseAbs().maxCoeff(), hessian_diagonal_));
         return options_;
     }
 

@@ -5,6 +5,7 @@
 #include "sinew/energies/potentials/point_load_potential.hpp"
 #include "sinew/energies/potentials/stiffness_damping_potential.hpp"
 #include "sinew/mesh/mesh.hpp"
+#include "sinew/mpm/mpm_scene.hpp"
 #include "sinew/problems/quasistatic/quasistatic_problem.hpp"
 #include "sinew/time/dynamics_settings.hpp"
 
@@ -87,6 +88,10 @@ struct Scene {
     std::shared_ptr<InertiaPotential> inertia;
     std::shared_ptr<InertiaPotential> mass_damping;
     std::shared_ptr<StiffnessDampingPotential> stiffness_damping;
+
+    /// A scene with an "mpm" section is particles on a grid (runs/mpm_run.hpp):
+    /// it has no mesh and no `problem`, only this.
+    std::shared_ptr<const MpmScene> mpm;
 
     /// Sets every scaled quantity to its value at load factor s (above).
     void apply_load_factor(double s);

@@ -26,6 +26,21 @@ std::string read_text_file(const std::string& path)
     return text.str();
 }
 
+/// A scene with an "mpm" section: the parts that apply without a mesh, and
+/// an InputError at the first key of any other part.
+void read_mesh_free_parts(const JsonCursor& root, const std::vector<std::shared_ptr<const ScenePart>>& parts,
+                          SceneAssembly& assembly)
+{
+    for (const auto& part : parts) {
+        const auto value = root.find(part->key());
+        if (value && !part->mesh_free())
+            value->fail("does not apply to a scene with \"mpm\" (its particles, materials, gravity, walls and "
+                        "colliders are keys of \"mpm\")");
+        if (value)
+            part->read(*value, assembly);
+    }
+}
+
 } // namespace
 
 Scene parse_scene(const std::string& text, const std::string& document, const std::string& base_folder)
@@ -41,6 +56,10 @@ Scene parse_scene(const std::string& text, const std::string& document, const st
     Scene scene;
     scene.name = std::filesystem::path(document).stem().string();
     SceneAssembly assembly(scene, base_folder);
+    if (root.has("mpm")) {
+        read_mesh_free_parts(root, parts, assembly);
+        return scene;
+    }
     for (const auto& part : parts) {
         if (auto value = root.find(part->key()))
             part->read(*value, assembly);

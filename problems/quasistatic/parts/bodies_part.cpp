@@ -75,7 +75,8 @@ std::shared_ptr<const CollisionBody> level_set_body(const JsonCursor& l, const s
     });
 }
 
-/// The body of entry `o`: an OBJ surface, a level set, a plane or a sphere.
+} // namespace
+
 std::shared_ptr<const CollisionBody> read_body(const JsonCursor& o, int dimension, const std::string& base_folder)
 {
     if (o.has("surface") + o.has("level_set") + o.has("plane") + o.has("sphere") != 1)
@@ -102,6 +103,8 @@ std::shared_ptr<const CollisionBody> read_body(const JsonCursor& o, int dimensio
     const double radius = s.at("radius").number();
     return at_place(s, [&] { return analytic_body(SphereObstacle{center, radius}, dimension); });
 }
+
+namespace {
 
 /// The body's rigid motion as a quantity a load factor scales: at factor s
 /// it is turned by R(sθ) about c and moved by s·t.

@@ -9,6 +9,7 @@ namespace {
 /// "name": the scene's name (default: the file's stem).
 class NamePart final : public ScenePart {
 public:
+    bool mesh_free() const override { return true; }
     std::string key() const override { return "name"; }
     std::string doc() const override { return "the scene's name (default: the file's stem)"; }
     std::string kind() const override { return "scene"; }
@@ -20,6 +21,7 @@ public:
 /// "description": one line, shown by sinew list for built-in scenes.
 class DescriptionPart final : public ScenePart {
 public:
+    bool mesh_free() const override { return true; }
     std::string key() const override { return "description"; }
     std::string doc() const override { return "one line, shown by sinew list for built-in scenes"; }
     std::string kind() const override { return "scene"; }

@@ -72,6 +72,9 @@ public:
     /// scene, potential, constraints or run.
     virtual std::string kind() const = 0;
     virtual bool required() const { return false; }
+    /// Whether the part applies to a scene without a mesh (an "mpm" scene):
+    /// its name, description, run settings and the "mpm" section itself.
+    virtual bool mesh_free() const { return false; }
     /// Parts are read by increasing stage, after the parts whose pieces they
     /// use: the mesh (10), materials (20), potentials (30…), boundary
     /// conditions (40…), constraint sets (50), run settings (60…). Each part

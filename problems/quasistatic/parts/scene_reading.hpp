@@ -1,6 +1,7 @@
 #pragma once
 // Helpers the scene parts share: error places, paths, node selections,
 // parameter text and group names.
+#include "sinew/bodies/collision_body.hpp"
 #include "sinew/core/input_error.hpp"
 #include "sinew/energies/models/model_parameters.hpp"
 #include "sinew/mesh/face_mesh.hpp"
@@ -50,6 +51,12 @@ PrescribedMotion prescribed_motion(const JsonCursor& b, int dimension);
 /// otherwise: the "face" mesh and the "face-skull" body read the same keys,
 /// so the same numbers give the face and its skull.
 FaceShape face_shape(const JsonCursor& o);
+
+/// The collision body of an object with exactly one of "surface" (an OBJ
+/// file or a generator, 3D), "level_set" (a .vdb file or a surface
+/// converted, 3D), "plane" ({point, normal}) or "sphere" ({center, radius}),
+/// as "bodies" and the colliders of "mpm" give it (docs/contact.md).
+std::shared_ptr<const CollisionBody> read_body(const JsonCursor& o, int dimension, const std::string& base_folder);
 
 /// The index of the mesh group called `name`; an error at `where` listing the groups otherwise.
 int group_index(const JsonCursor& where, const Mesh& mesh, const std::string& name);

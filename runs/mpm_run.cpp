@@ -1,0 +1,355 @@
+#include "sinew/runs/mpm_run.hpp"
+
+#include "sinew/core/format_number.hpp"
+#include "sinew/core/input_error.hpp"
+#include "sinew/mesh/pvd_writer.hpp"
+#include "sinew/mesh/vtp_writer.hpp"
+#include "sinew/mpm/cfl.hpp"
+#include "sinew/mpm/explicit_step.hpp"
+#include "sinew/mpm/grid_velocity_nlp.hpp"
+#include "sinew/mpm/implicit_step.hpp"
+#include "sinew/mpm/particle_measures.hpp"
+#include "sinew/runs/output_file.hpp"
+#include "sinew/runs/result_json.hpp"
+#include "sinew/runs/scene_run_settings.hpp"
+#include "sinew/runs/step_gradient_target.hpp"
+#include "sinew/solvers/solver.hpp"
+
+#include <Eigen/LU>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+
+namespace sinew {
+namespace {
+
+/// N = ⌈T/Δt⌉ steps (Δt·N within round-off of T counts as T).
+long long step_count(const MpmScene& scene, double time_step)
+{
+    return static_cast<long long>(std::ceil(scene.duration / time_step * (1.0 - 1e-12)));
+}
+
+template <int Dim>
+MpmFrameRow measure(const MpmSetup<Dim>& setup, const Particles<Dim>& particles, double dx, double cfl)
+{
+    const auto models = setup.model_pointers();
+    MpmFrameRow row;
+    row.kinetic_energy = kinetic_energy(particles);
+    row.elastic_energy = elastic_energy(particles, models);
+    for (int p = 0; p < particles.size(); ++p) {
+        const auto i = static_cast<std::size_t>(p);
+        row.gravity_energy -= particles.mass[i] * setup.step.gravity.dot(particles.x[i]);  // −m g·x
+        const double J = particles.F[i].determinant();
+        row.min_J = p == 0 ? J : std::min(row.min_J, J);
+        row.max_J = p == 0 ? J : std::max(row.max_J, J);
+    }
+    row.total_energy = row.kinetic_energy + row.elastic_energy + row.gravity_energy;
+    row.linear_momentum.head<Dim>() = linear_momentum(particles);
+    row.cfl_time_step = cfl_time_step(particles, models, dx, cfl);
+    return row;
+}
+
+/// The particles' point data: velocity, det F, ‖P‖, material, current fiber F a₀, damage.
+template <int Dim>
+VtuArrays particle_arrays(const MpmSetup<Dim>& setup, const Particles<Dim>& particles)
+{
+    const auto count = static_cast<Eigen::Index>(particles.size());
+    Eigen::MatrixXd velocity(Dim, count), fiber(Dim, count), J(1, count), stress(1, count), material(1, count),
+        damage(1, count);
+    for (Eigen::Index p = 0; p < count; ++p) {
+        const auto i = static_cast<std::size_t>(p);
+        typename ConstitutiveModel<Dim, Dim>::Stress P;
+        setup.models[static_cast<std::size_t>(particles.material[i])]->evaluate(particles.F[i], particles.point[i], &P,
+                                                                                nullptr, Projection::none);
+        velocity.col(p) = particles.v[i];
+        fiber.col(p) = particles.F[i] * particles.point[i].fiber;
+        J(0, p) = particles.F[i].determinant();
+        stress(0, p) = P.norm();
+        material(0, p) = particles.material[i];
+        damage(0, p) = particles.point[i].damage;
+    }
+    return {{"velocity", velocity}, {"J", J}, {"stress_norm", stress}, {"material", material}, {"fiber", fiber},
+            {"damage", damage}};
+}
+
+Eigen::MatrixXd positions_of(const std::vector<Eigen::Vector2d>& x)
+{
+    Eigen::MatrixXd out(2, static_cast<Eigen::Index>(x.size()));
+    for (std::size_t p = 0; p < x.size(); ++p)
+        out.col(static_cast<Eigen::Index>(p)) = x[p];
+    return out;
+}
+
+Eigen::MatrixXd positions_of(const std::vector<Eigen::Vector3d>& x)
+{
+    Eigen::MatrixXd out(3, static_cast<Eigen::Index>(x.size()));
+    for (std::size_t p = 0; p < x.size(); ++p)
+        out.col(static_cast<Eigen::Index>(p)) = x[p];
+    return out;
+}
+
+nlohmann::json to_json(const MpmFrameRow& row)
+{
+    return {{"frame", row.frame},
+            {"time", row.time},
+            {"steps", row.steps},
+            {"kinetic_energy", number(row.kinetic_energy)},
+            {"elastic_energy", number(row.elastic_energy)},
+            {"gravity_energy", number(row.gravity_energy)},
+            {"total_energy", number(row.total_energy)},
+            {"linear_momentum", {number(row.linear_momentum[0]), number(row.linear_momentum[1]), number(row.linear_momentum[2])}},
+            {"min_J", number(row.min_J)},
+            {"max_J", number(row.max_J)},
+            {"cfl_time_step", number(row.cfl_time_step)},
+            {"iterations", row.iterations},
+            {"time_s", row.time_s}};
+}
+
+/// The largest diagonal entry of the NLP's Hessian at x.
+double largest_hessian_diagonal(Nlp& nlp, const Eigen::VectorXd& x)
+{
+    Eigen::VectorXd values(nlp.hessian_pattern().nonzeros());
+    nlp.hessian(x, 1.0, Eigen::VectorXd(), Projection::none, values);
+    double largest = 0.0;
+    for (int k = 0; k < values.size(); ++k)
+        if (nlp.hessian_pattern().rows[static_cast<std::size_t>(k)] == nlp.hessian_pattern().cols[static_cast<std::size_t>(k)])
+            largest = std::max(largest, std::abs(values[k]));
+    return largest;
+}
+
+/// The implicit steps' solve: the settings' solver, its iterations and
+/// verdicts counted. Each step's KKT tolerance, and the gradient target of a
+/// solver that declares one (unless the caller set it), are relative to the
+/// step's force scale max(‖∇E(v*)‖∞, ‖v*‖∞ · max Hᵢᵢ), as a time step's are
+/// (runs/step_gradient_target.hpp): a step that starts at its solution up to
+/// round-off (free fall) ends there, converged.
+struct ImplicitSolves {
+    const SceneRunSettings& settings;
+    int iterations = 0;
+    int not_converged = 0;
+
+    GridVelocitySolve solve()
+    {
+        return [this](Nlp& nlp, Eigen::VectorXd& v) {
+            SolverOptions options = settings.options;
+            options.verbosity = 0;
+            Eigen::VectorXd gradient(v.size());
+            nlp.gradient(v, gradient);
+            const double diagonal = largest_hessian_diagonal(nlp, v);
+            const double predictor = v.cwiseAbs().maxCoeff();
+            const double force_scale = std::max(gradient.cwiseAbs().maxCoeff(), predictor * diagonal);
+            options.kkt_tolerance = settings.options.kkt_tolerance * std::max(1.0, force_scale);
+            if (step_sets(settings, "gradient_target"))
+                options.backend["gradient_target"] =
+                    option_text(step_gradient_target(settings.options.tolerance, force_scale, predictor, diagonal));
+            const Result result = sinew::solve(nlp, settings.solver, options);
+            v = result.x;
+            iterations += result.iterations;
+            const bool converged = result.status == Status::converged;
+            not_converged += converged ? 0 : 1;
+            return converged;
+        };
+    }
+};
+
+template <int Dim>
+class MpmRun {
+public:
+    MpmRun(const MpmScene& scene, const SceneRunSettings& settings)
+        : scene_(scene), settings_(settings), setup_(std::get<MpmSetup<Dim>>(scene.setup)),
+          particles_(setup_.particles), grid_(scene.dx), solves_{settings}
+    {
+    }
+
+    /// The explicit bound at t = 0, and the implicit solver on the first step's NLP.
+    void check() const
+    {
+        const double bound = cfl_time_step(particles_, setup_.model_pointers(), scene_.dx, scene_.cfl);
+        if (scene_.stepping == MpmStepping::explicit_steps && !scene_.substeps && step_length() > bound)
+            throw InputError("mpm: time_step " + format_number(step_length()) + " s exceeds the explicit CFL bound " +
+                             format_number(bound) + " s (cfl " + format_number(scene_.cfl) +
+                             "); lower it, set \"substeps\": true, or use \"stepping\": \"implicit\"");
+        if (scene_.stepping == MpmStepping::implicit_steps) {
+            SparseGrid<Dim> grid(scene_.dx);
+            particles_to_grid(particles_, setup_.step.transfer, grid);
+            const auto models = setup_.model_pointers();
+            GridVelocityNlp<Dim> nlp(particles_, models, grid, step_settings());
+            check_solve(nlp, settings_.solver, settings_.options);
+        }
+    }
+
+    MpmRunOutcome run(const std::function<void(const MpmFrameRow&)>& on_frame)
+    {
+        const auto start = std::chrono::steady_clock::now();
+        const long long steps = step_count(scene_, setup_.step.time_step);
+        MpmRunOutcome outcome;
+        record(0, 0, outcome, on_frame, start);
+        for (int frame = 1; frame <= scene_.frames && outcome.stopped.empty(); ++frame) {
+            const long long last = steps * frame / scene_.frames;
+            for (; taken_ < last && outcome.stopped.empty(); ++taken_)
+                outcome.stopped = step();
+            record(frame, taken_, outcome, on_frame, start);
+        }
+        outcome.steps = sub_steps_;
+        const bool solved = solves_.not_converged == 0;
+        if (outcome.stopped.empty() && !solved)
+            outcome.stopped = std::to_string(solves_.not_converged) + " implicit solves did not converge";
+        outcome.converged = outcome.stopped.empty();
+        outcome.run.solver = scene_.stepping == MpmStepping::implicit_steps ? settings_.solver : "explicit";
+        outcome.run.problem = "mpm";
+        outcome.run.status = outcome.converged ? Status::converged : solved ? Status::failed : Status::max_iterations;
+        outcome.run.message = outcome.converged ? "reached t = " + format_number(scene_.duration) + " s" : outcome.stopped;
+        outcome.run.iterations = solves_.iterations;
+        outcome.run.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        outcome.run.statistics["steps"] = static_cast<double>(sub_steps_);
+        write_result(outcome);
+        return outcome;
+    }
+
+    /// Creates the folder (after every check) and remembers where to write.
+    void open_folder()
+    {
+        if (settings_.folder.empty())
+            return;
+        std::error_code error;
+        std::filesystem::create_directories(settings_.folder, error);
+        if (error)
+            throw InputError("cannot create output folder '" + settings_.folder + "': " + error.message());
+        folder_ = settings_.folder + "/";
+        check_writable(folder_ + "result.json");
+    }
+
+private:
+    double step_length() const { return scene_.duration / static_cast<double>(step_count(scene_, setup_.step.time_step)); }
+
+    MpmStepSettings<Dim> step_settings() const
+    {
+        MpmStepSettings<Dim> step = setup_.step;
+        step.time_step = step_length();
+        return step;
+    }
+
+    /// One step of the scene's Δt; why the run must end, or "".
+    std::string step()
+    {
+        const auto models = setup_.model_pointers();
+        MpmStepSettings<Dim> step = step_settings();
+        if (scene_.stepping == MpmStepping::implicit_steps) {
+            ++sub_steps_;
+            return implicit_step(particles_, models, step, grid_, solves_.solve()).failure;
+        }
+        const double bound = cfl_time_step(particles_, models, scene_.dx, scene_.cfl);
+        int parts = 1;
+        if (step.time_step > bound) {
+            if (!scene_.substeps)
+                return "step " + std::to_string(taken_ + 1) + ": time_step " + format_number(step.time_step) +
+                       " s exceeds the explicit CFL bound " + format_number(bound) + " s at this state";
+            parts = static_cast<int>(std::min(1e6, std::ceil(step.time_step / bound)));
+        }
+        step.time_step /= parts;
+        for (int k = 0; k < parts; ++k) {
+            ++sub_steps_;
+            const std::string failure = explicit_step(particles_, models, step, grid_).failure;
+            if (!failure.empty())
+                return failure;
+        }
+        return {};
+    }
+
+    void record(int frame, long long steps, MpmRunOutcome& outcome, const std::function<void(const MpmFrameRow&)>& on_frame,
+                std::chrono::steady_clock::time_point start)
+    {
+        MpmFrameRow row = measure(setup_, particles_, scene_.dx, scene_.cfl);
+        row.frame = frame;
+        row.time = scene_.duration * static_cast<double>(steps) / static_cast<double>(step_count(scene_, setup_.step.time_step));
+        row.steps = sub_steps_;
+        row.iterations = solves_.iterations - iterations_recorded_;
+        iterations_recorded_ = solves_.iterations;
+        row.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        outcome.frames.push_back(row);
+        if (!folder_.empty() && settings_.vtu != VtuOutput::none) {
+            const std::string name = "frame_" + std::to_string(frame) + ".vtp";
+            write_vtp(folder_ + name, positions_of(particles_.x), particle_arrays(setup_, particles_), settings_.encoding);
+            collection_.push_back({row.time, name});
+        }
+        if (on_frame)
+            on_frame(row);
+    }
+
+    void write_result(const MpmRunOutcome& outcome) const
+    {
+        if (folder_.empty())
+            return;
+        nlohmann::json frames = nlohmann::json::array(), files = nlohmann::json::array();
+        for (const MpmFrameRow& row : outcome.frames)
+            frames.push_back(to_json(row));
+        for (const PvdEntry& entry : collection_)
+            files.push_back(entry.file);
+        if (!collection_.empty())
+            write_pvd(folder_ + "result.pvd", collection_);
+        const nlohmann::json result = {
+            {"scene", "mpm"},
+            {"dimension", Dim},
+            {"particles", particles_.size()},
+            {"materials", scene_.materials},
+            {"dx", scene_.dx},
+            {"stepping", scene_.stepping == MpmStepping::implicit_steps ? "implicit" : "explicit"},
+            {"solver", scene_.stepping == MpmStepping::implicit_steps ? nlohmann::json(settings_.solver) : nlohmann::json()},
+            {"time_step", step_length()},
+            {"duration", scene_.duration},
+            {"cfl", scene_.cfl},
+            {"substeps", scene_.substeps},
+            {"steps", outcome.steps},
+            {"converged", outcome.converged},
+            {"stopped", outcome.stopped},
+            {"status", to_string(outcome.run.status)},
+            {"iterations", outcome.run.iterations},
+            {"time_s", outcome.run.time_s},
+            {"vtp", files},
+            {"frames", frames}};
+        write_text_file(folder_ + "result.json", result.dump(2) + "\n");
+    }
+
+    const MpmScene& scene_;
+    const SceneRunSettings& settings_;
+    const MpmSetup<Dim>& setup_;
+    Particles<Dim> particles_;
+    SparseGrid<Dim> grid_;
+    ImplicitSolves solves_;
+    long long taken_ = 0;      ///< steps of the scene's Δt taken
+    long long sub_steps_ = 0;  ///< steps taken, sub-steps counted
+    int iterations_recorded_ = 0;
+    std::string folder_;
+    std::vector<PvdEntry> collection_;
+};
+
+template <int Dim>
+MpmRunOutcome run_in(const MpmScene& scene, const SceneRunSettings& settings,
+                     const std::function<void(const MpmFrameRow&)>& on_frame)
+{
+    MpmRun<Dim> run(scene, settings);
+    run.check();
+    run.open_folder();
+    return run.run(on_frame);
+}
+
+} // namespace
+
+void check_mpm_run(const MpmScene& scene, const SceneRunSettings& settings)
+{
+    if (scene.dimension == 2)
+        MpmRun<2>(scene, settings).check();
+    else
+        MpmRun<3>(scene, settings).check();
+}
+
+MpmRunOutcome run_mpm(const MpmScene& scene, const SceneRunSettings& settings,
+                      const std::function<void(const MpmFrameRow&)>& on_frame)
+{
+    return scene.dimension == 2 ? run_in<2>(scene, settings, on_frame) : run_in<3>(scene, settings, on_frame);
+}
+
+} // namespace sinew

@@ -1,0 +1,61 @@
+#pragma once
+#include "sinew/problems/quasistatic/scene.hpp"
+#include "sinew/runs/scene_runner.hpp"
+#include "sinew/solvers/result.hpp"
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace sinew {
+
+/// One output frame of an MPM run, as result.json's "frames" rows hold it.
+struct MpmFrameRow {
+    int frame = 0;
+    double time = 0.0;        ///< s
+    long long steps = 0;      ///< steps taken since t = 0, sub-steps counted
+    double kinetic_energy = 0.0;
+    double elastic_energy = 0.0;
+    double gravity_energy = 0.0;  ///< −Σ_p m_p g·x_p
+    double total_energy = 0.0;    ///< kinetic + elastic + gravity
+    Eigen::Vector3d linear_momentum = Eigen::Vector3d::Zero();
+    double min_J = 1.0;  ///< smallest and largest det F over the particles
+    double max_J = 1.0;
+    double cfl_time_step = 0.0;  ///< the explicit bound at this state (cfl · dx / max(c + |v|))
+    int iterations = 0;          ///< implicit: solver iterations since the previous frame
+    double time_s = 0.0;         ///< wall time since the run started
+};
+
+struct MpmRunOutcome {
+    bool converged = false;  ///< reached the duration, every implicit solve converged
+    std::string stopped;     ///< why the run ended early or did not converge ("" when it did)
+    std::vector<MpmFrameRow> frames;  ///< frame 0 (t = 0) first
+    long long steps = 0;
+    /// The run as one result (for --json): status, message, iterations and
+    /// time summed over the steps; x is empty.
+    Result run;
+};
+
+/// What an MPM run checks before it writes anything: explicit steps of the
+/// scene's Δt below the CFL bound at t = 0 (unless the scene allows
+/// sub-steps); implicit steps with a solver that accepts the grid-velocity
+/// NLP of the first step and options it accepts. InputError naming the
+/// setting otherwise.
+void check_mpm_run(const MpmScene& scene, const SceneRunSettings& settings);
+
+/// Runs the scene's MPM section (docs/mpm.md, "Scenes"): N = ⌈T/Δt⌉ steps of
+/// T/N, explicit or implicit (the settings' solver, projected Newton by
+/// default), and writes into settings.folder (when not empty):
+///   frame_k.vtp   the particles at each of the scene's frames (k = 0 …), unless vtu is "none"
+///   result.pvd    the frames with their times
+///   result.json   the scene's settings and one row per frame
+/// An explicit step above the CFL bound (the particles sped up) is split
+/// into sub-steps when the scene allows it, else it ends the run, as does a
+/// step whose stress is not finite; an implicit solve that does not converge
+/// is taken and counted. The output is written either way.
+MpmRunOutcome run_mpm(const MpmScene& scene, const SceneRunSettings& settings,
+                      const std::function<void(const MpmFrameRow&)>& on_frame = {});
+
+} // namespace sinew
