@@ -1,6 +1,7 @@
 #include "cli_options.hpp"
 #include "commands.hpp"
 #include "dynamics_bench.hpp"
+#include "mpm_bench.hpp"
 #include "reuse_bench.hpp"
 #include "rig_bench.hpp"
 #include "strategies_bench.hpp"
@@ -41,6 +42,8 @@ const char* const kReuseSuite = "reuse";
 const char* const kRigSuite = "rig";
 /// The suite of scenes stepped in time, each under every integrator (dynamics_bench.hpp).
 const char* const kDynamicsSuite = "dynamics";
+/// The suite of the material point method's steps (mpm_bench.hpp).
+const char* const kMpmSuite = "mpm";
 
 struct BenchFlags {
     std::string suite = "all";
@@ -309,7 +312,7 @@ void add_bench_command(CLI::App& app, int& exit_code)
                  "the published optimum f* (feasible, at f*, stopped on its own criterion; converged where there "
                  "is no f*), 3 otherwise");
     auto flags = std::make_shared<BenchFlags>();
-    command->add_option("--suite", flags->suite, "suite name (see sinew list), kernels, strategies, reuse, rig, or all")
+    command->add_option("--suite", flags->suite, "suite name (see sinew list), kernels, strategies, reuse, rig, mpm, or all")
         ->capture_default_str();
     command->add_option("--output", flags->output,
                         "suite strategies: folder for each problem's comparison and the performance profiles")
@@ -348,13 +351,13 @@ void add_bench_command(CLI::App& app, int& exit_code)
         const bool strategies = flags->suite == kStrategiesSuite;
         const bool reuse = flags->suite == kReuseSuite;
         const bool rig = flags->suite == kRigSuite;
-        if (flags->suite != "all" && !kernels_only && !strategies && !reuse && !rig &&
+        if (flags->suite != "all" && !kernels_only && !strategies && !reuse && !rig && flags->suite != kMpmSuite &&
             std::find(suites.begin(), suites.end(), flags->suite) == suites.end()) {
             std::string valid = "all";
             for (const auto& s : suites)
                 valid += ", " + s;
             throw InputError("unknown suite '" + flags->suite + "'; valid suites: " + valid + ", " + kKernelSuite +
-                             ", " + kStrategiesSuite + ", " + kReuseSuite + ", " + kRigSuite);
+                             ", " + kStrategiesSuite + ", " + kReuseSuite + ", " + kRigSuite + ", " + kMpmSuite);
         }
         if (rig)
             check_rig_strategies(flags->solvers, options);
@@ -372,6 +375,16 @@ void add_bench_command(CLI::App& app, int& exit_code)
                 builtin_scene_text(name);  // scenes only: InputError naming the valid ones
             nlohmann::json runs = nlohmann::json::array();
             const bool converged = run_reuse_bench(flags->problems, options, runs);
+            if (!flags->json.empty())
+                write_text_file(flags->json, nlohmann::json{{"suite", flags->suite}, {"runs", runs}}.dump(2) + "\n");
+            exit_code = converged ? 0 : 3;
+            return;
+        }
+        if (flags->suite == kMpmSuite) {
+            if (!flags->solvers.empty() || !flags->problems.empty())
+                throw InputError("suite mpm chooses its runs and the scenes' solvers; drop --solver and --problem");
+            nlohmann::json runs = nlohmann::json::array();
+            const bool converged = run_mpm_bench(options, runs);
             if (!flags->json.empty())
                 write_text_file(flags->json, nlohmann::json{{"suite", flags->suite}, {"runs", runs}}.dump(2) + "\n");
             exit_code = converged ? 0 : 3;

@@ -73,4 +73,14 @@ struct BSplineStencil {
 template <int Dim>
 BSplineStencil<Dim> bspline_stencil(const Eigen::Matrix<double, Dim, 1>& x, double dx, SplineOrder order);
 
+/// The same stencil with the weights N only (dN, ddN left zero), as the
+/// transfers need them: the same values as bspline_stencil's, bit for bit,
+/// without the derivatives and the branches (quadratic B-splines).
+template <int Dim>
+BSplineStencil<Dim> bspline_weights(const Eigen::Matrix<double, Dim, 1>& x, double dx, SplineOrder order);
+
+/// The stencil's first node alone: ⌊x/dx − ½⌋ (quadratic) or ⌊x/dx⌋ − 1 (cubic) per axis.
+template <int Dim>
+Eigen::Matrix<int, Dim, 1> stencil_base(const Eigen::Matrix<double, Dim, 1>& x, double dx, SplineOrder order);
+
 } // namespace sinew

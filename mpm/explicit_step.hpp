@@ -7,9 +7,14 @@
 
 namespace sinew {
 
-/// How a step went: empty `failure` when every particle's stress was finite.
+/// How a step went: empty `failure` when every particle's stress was
+/// finite; and the wall time of its phases (s), for the benchmark.
 struct ExplicitStepReport {
     std::string failure;
+    double to_grid_s = 0.0;       ///< particles_to_grid
+    double stress_s = 0.0;        ///< the MLS stress divergence, P of every particle
+    double grid_update_s = 0.0;   ///< v_i from momentum and gravity, walls and colliders
+    double to_particles_s = 0.0;  ///< grid_to_particles and advection
 };
 
 /// One explicit (symplectic Euler) MLS-MPM step (Hu et al. 2018, "A moving

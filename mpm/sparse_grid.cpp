@@ -75,6 +75,13 @@ int SparseGrid<Dim>::find(const Index& node) const
 }
 
 template <int Dim>
+int SparseGrid<Dim>::block_number(const Index& block) const
+{
+    const auto it = block_index_.find(key(block));
+    return it == block_index_.end() ? -1 : it->second;
+}
+
+template <int Dim>
 typename SparseGrid<Dim>::Index SparseGrid<Dim>::node(int slot) const
 {
     Index offset;

@@ -36,6 +36,12 @@ public:
     /// The node at `slot`.
     Index node(int slot) const;
     Vector position(int slot) const { return node(slot).template cast<double>() * dx_; }
+    /// The block holding `node` (floor division of each index by 4).
+    static Index block_of(const Index& node);
+    /// The number of the block at block coordinates `block`, or −1 when it does not exist.
+    int block_number(const Index& block) const;
+    /// A node's place in its block, last axis fastest.
+    static int place_in_block(const Index& node, const Index& block);
 
     int blocks() const { return static_cast<int>(block_origin_.size()); }
     int slots() const { return blocks() * kBlockNodes; }
@@ -50,9 +56,6 @@ public:
 
 private:
     static std::uint64_t key(const Index& block);
-    static Index block_of(const Index& node);
-    /// The node's place in its block, last axis fastest.
-    static int place_in_block(const Index& node, const Index& block);
 
     double dx_;
     std::unordered_map<std::uint64_t, int> block_index_;

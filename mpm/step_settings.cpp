@@ -14,25 +14,45 @@ std::vector<NodeContact<Dim>> node_contacts(const MpmStepSettings<Dim>& settings
 }
 
 template <int Dim>
-void finish_step(const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid, Particles<Dim>& particles)
+void apply_grid_conditions(const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid)
 {
-    using Matrix = typename Particles<Dim>::Matrix;
+    if (!settings.walls && settings.colliders.empty())
+        return;
     for (int slot = 0; slot < grid.slots(); ++slot) {
         const auto s = static_cast<std::size_t>(slot);
         if (grid.mass[s] > 0.0)
             grid.velocity[s] = conditioned_velocity(node_contacts(settings, grid.position(slot), grid.dx()), grid.velocity[s]);
     }
+}
+
+template <int Dim>
+void advect_particles(const MpmStepSettings<Dim>& settings, const SparseGrid<Dim>& grid, Particles<Dim>& particles)
+{
+    using Matrix = typename Particles<Dim>::Matrix;
     grid_to_particles(grid, settings.transfer, particles);
     const double h = settings.time_step;
-    for (int p = 0; p < particles.size(); ++p) {
+    const int count = particles.size();
+#pragma omp parallel for schedule(static)
+    for (int p = 0; p < count; ++p) {
         const auto i = static_cast<std::size_t>(p);
         particles.x[i] += h * particles.v[i];
         particles.F[i] = (Matrix::Identity() + h * particles.C[i]) * particles.F[i];  // Fⁿ⁺¹ = (I + Δt ∇v) Fⁿ
     }
 }
 
+template <int Dim>
+void finish_step(const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid, Particles<Dim>& particles)
+{
+    apply_grid_conditions(settings, grid);
+    advect_particles(settings, grid, particles);
+}
+
 template std::vector<NodeContact<2>> node_contacts<2>(const MpmStepSettings<2>&, const Eigen::Vector2d&, double);
 template std::vector<NodeContact<3>> node_contacts<3>(const MpmStepSettings<3>&, const Eigen::Vector3d&, double);
+template void apply_grid_conditions<2>(const MpmStepSettings<2>&, SparseGrid<2>&);
+template void apply_grid_conditions<3>(const MpmStepSettings<3>&, SparseGrid<3>&);
+template void advect_particles<2>(const MpmStepSettings<2>&, const SparseGrid<2>&, Particles<2>&);
+template void advect_particles<3>(const MpmStepSettings<3>&, const SparseGrid<3>&, Particles<3>&);
 template void finish_step<2>(const MpmStepSettings<2>&, SparseGrid<2>&, Particles<2>&);
 template void finish_step<3>(const MpmStepSettings<3>&, SparseGrid<3>&, Particles<3>&);
 

@@ -27,9 +27,16 @@ template <int Dim>
 std::vector<NodeContact<Dim>> node_contacts(const MpmStepSettings<Dim>& settings, const Eigen::Matrix<double, Dim, 1>& x,
                                             double dx);
 
-/// The end of every step once the grid velocity is known: the walls' and the
-/// colliders' conditions on the grid, grid_to_particles (v_p, C_p), then
-/// advection x_p ← x_p + Δt v_p and F_p ← (I + Δt C_p) F_p.
+/// The walls' and the colliders' conditions on the velocity of every node with mass.
+template <int Dim>
+void apply_grid_conditions(const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid);
+
+/// grid_to_particles (v_p, C_p), then advection x_p ← x_p + Δt v_p and
+/// F_p ← (I + Δt C_p) F_p.
+template <int Dim>
+void advect_particles(const MpmStepSettings<Dim>& settings, const SparseGrid<Dim>& grid, Particles<Dim>& particles);
+
+/// The end of every step once the grid velocity is known: apply_grid_conditions, then advect_particles.
 template <int Dim>
 void finish_step(const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid, Particles<Dim>& particles);
 

@@ -34,8 +34,12 @@ void particles_to_grid(const Particles<Dim>& particles, const TransferSettings& 
 template <int Dim>
 void grid_to_particles(const SparseGrid<Dim>& grid, const TransferSettings& settings, Particles<Dim>& particles);
 
-/// The stencil of particle p, after checking that the grid can hold it
-/// (InputError naming p and its position otherwise).
+/// InputError naming particle p and its position when the grid cannot hold
+/// its stencil (a coordinate not finite, or beyond 2²⁰ − 4 cells of dx).
+template <int Dim>
+void check_in_grid(const Particles<Dim>& particles, int p, double dx);
+
+/// The stencil of particle p, after check_in_grid.
 template <int Dim>
 BSplineStencil<Dim> checked_stencil(const Particles<Dim>& particles, int p, double dx, SplineOrder order);
 

@@ -162,6 +162,8 @@ public:
         : scene_(scene), settings_(settings), setup_(std::get<MpmSetup<Dim>>(scene.setup)),
           particles_(setup_.particles), grid_(scene.dx), solves_{settings}
     {
+        for (const GridCollider<Dim>& collider : setup_.step.colliders)
+            moving_.push_back(std::make_shared<PlacedBody>(*collider.body));
     }
 
     /// The explicit bound at t = 0, and the implicit solver on the first step's NLP.
@@ -225,10 +227,19 @@ public:
 private:
     double step_length() const { return scene_.duration / static_cast<double>(step_count(scene_, setup_.step.time_step)); }
 
-    MpmStepSettings<Dim> step_settings() const
+    /// The scene's step settings with Δt = T/N and the run's own colliders,
+    /// each placed where its velocity has carried it by `time`.
+    MpmStepSettings<Dim> step_settings(double time = 0.0) const
     {
         MpmStepSettings<Dim> step = setup_.step;
         step.time_step = step_length();
+        for (std::size_t k = 0; k < moving_.size(); ++k) {
+            const PlacedBody& start = *setup_.step.colliders[k].body;
+            Eigen::Vector3d travel = Eigen::Vector3d::Zero();
+            travel.head<Dim>() = time * step.colliders[k].velocity;  // t₀ + v t
+            moving_[k]->set_placement(start.rotation(), start.translation() + travel);
+            step.colliders[k].body = moving_[k];
+        }
         return step;
     }
 
@@ -236,7 +247,8 @@ private:
     std::string step()
     {
         const auto models = setup_.model_pointers();
-        MpmStepSettings<Dim> step = step_settings();
+        const double time = static_cast<double>(taken_) * step_length();
+        MpmStepSettings<Dim> step = step_settings(time);
         if (scene_.stepping == MpmStepping::implicit_steps) {
             ++sub_steps_;
             return implicit_step(particles_, models, step, grid_, solves_.solve()).failure;
@@ -249,10 +261,12 @@ private:
                        " s exceeds the explicit CFL bound " + format_number(bound) + " s at this state";
             parts = static_cast<int>(std::min(1e6, std::ceil(step.time_step / bound)));
         }
-        step.time_step /= parts;
+        const double part = step.time_step / parts;
         for (int k = 0; k < parts; ++k) {
+            MpmStepSettings<Dim> sub_step = step_settings(time + k * part);
+            sub_step.time_step = part;
             ++sub_steps_;
-            const std::string failure = explicit_step(particles_, models, step, grid_).failure;
+            const std::string failure = explicit_step(particles_, models, sub_step, grid_).failure;
             if (!failure.empty())
                 return failure;
         }
@@ -324,6 +338,8 @@ private:
     int iterations_recorded_ = 0;
     std::string folder_;
     std::vector<PvdEntry> collection_;
+    /// The colliders as this run places them (the scene's stay where they start).
+    std::vector<std::shared_ptr<PlacedBody>> moving_;
 };
 
 template <int Dim>

@@ -123,3 +123,19 @@ TEST_CASE("B-spline stencils: the gradient is the product rule of the axes' spli
         }
     });
 }
+
+TEST_CASE("B-spline stencil: the transfers' weights-only stencil gives the same weights bit for bit")
+{
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> position(-3.0, 3.0);
+    for (const SplineOrder order : {SplineOrder::quadratic, SplineOrder::cubic})
+        for (int sample = 0; sample < 1000; ++sample) {
+            const Eigen::Vector3d x(position(rng), position(rng), position(rng));
+            const BSplineStencil<3> full = bspline_stencil<3>(x, 0.07, order);
+            const BSplineStencil<3> weights = bspline_weights<3>(x, 0.07, order);
+            CHECK(weights.base == full.base);
+            CHECK(stencil_base<3>(x, 0.07, order) == full.base);
+            CHECK(weights.width == full.width);
+            CHECK(weights.N == full.N);
+        }
+}

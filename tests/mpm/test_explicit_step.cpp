@@ -3,6 +3,7 @@
 // with no gravity and no boundaries; a non-finite stress names its particle.
 #include "mpm/particle_clouds.hpp"
 
+#include "sinew/core/threads.hpp"
 #include "sinew/energies/models/model_catalog.hpp"
 #include "sinew/mpm/explicit_step.hpp"
 #include "sinew/mpm/particle_measures.hpp"
@@ -10,7 +11,9 @@
 #include <Eigen/Geometry>
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <limits>
+#include <random>
 
 using namespace sinew;
 using namespace sinew::test;
@@ -103,4 +106,36 @@ TEST_CASE("explicit MPM step: a stress that is not finite ends the step and name
     const ExplicitStepReport report = explicit_step(particles, models, MpmStepSettings<3>{}, grid);
     CHECK_THAT(report.failure, Catch::Contains("particle 5"));
     CHECK(particles.x == before.x);
+}
+
+TEST_CASE("explicit MPM step: the same particles bit for bit on one thread and on two")
+{
+    const auto model = fixed_corotated();
+    const std::vector<const Model3d*> models{model.get()};
+    MpmStepSettings<3> settings;
+    settings.time_step = 1e-4;
+    settings.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
+    std::vector<Particles<3>> results;
+    for (const int count : {1, std::min(2, available_cores())}) {
+        set_threads(count);
+        Particles<3> particles = random_particles<3>(3000, 0.3, 0.7, 0.5, 2.0, 17);
+        std::mt19937 rng(5);
+        std::uniform_real_distribution<double> u11(-1.0, 1.0);
+        for (auto& F : particles.F)
+            F = Eigen::Matrix3d::Identity() + 0.05 * Eigen::Matrix3d::NullaryExpr([&] { return u11(rng); });
+        SparseGrid<3> grid(0.05);
+        for (int n = 0; n < 10; ++n)
+            REQUIRE(explicit_step(particles, models, settings, grid).failure.empty());
+        results.push_back(particles);
+    }
+    set_threads(available_cores());
+    if (available_cores() < 2)
+        WARN("one core: both runs were on one thread");
+    for (int p = 0; p < results[0].size(); ++p) {
+        const auto i = static_cast<std::size_t>(p);
+        CHECK(results[0].x[i] == results[1].x[i]);
+        CHECK(results[0].v[i] == results[1].v[i]);
+        CHECK(results[0].C[i] == results[1].C[i]);
+        CHECK(results[0].F[i] == results[1].F[i]);
+    }
 }
