@@ -2,6 +2,7 @@
 
 #include "sinew/core/input_error.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sinew {
@@ -68,11 +69,58 @@ private:
     int dimension_;
 };
 
+/// The signed distance to the box |x − c| < h (per axis) of `dimension` axes.
+class BoxBody final : public CollisionBody {
+public:
+    BoxBody(const Eigen::Vector3d& center, const Eigen::Vector3d& half, int dimension)
+        : center_(center), half_(half), dimension_(dimension)
+    {
+    }
+    std::string name() const override { return "box"; }
+    std::string kind() const override { return "box"; }
+    int dimension() const override { return dimension_; }
+    BodyDistance distance(const Eigen::Vector3d& x) const override
+    {
+        BodyDistance d;
+        Eigen::Vector3d q = Eigen::Vector3d::Constant(-HUGE_VAL), sign = Eigen::Vector3d::Zero(),
+                        r = Eigen::Vector3d::Zero();
+        for (int a = 0; a < dimension_; ++a) {
+            sign[a] = x[a] < center_[a] ? -1.0 : 1.0;
+            q[a] = std::abs(x[a] - center_[a]) - half_[a];  // q = |x − c| − h
+            r[a] = std::max(q[a], 0.0);
+        }
+        const double outside = r.norm();
+        if (outside > 0.0) {
+            d.distance = outside;
+            d.gradient = sign.cwiseProduct(r) / outside;
+            Eigen::Matrix3d P = Eigen::Matrix3d::Zero();
+            for (int a = 0; a < dimension_; ++a)
+                P(a, a) = q[a] > 0.0 ? 1.0 : 0.0;
+            d.hessian = (P - d.gradient * d.gradient.transpose()) / outside;
+            return d;
+        }
+        int axis = 0;
+        for (int a = 1; a < dimension_; ++a)
+            if (q[a] > q[axis])
+                axis = a;
+        d.distance = q[axis];
+        d.gradient[axis] = sign[axis];
+        return d;
+    }
+
+private:
+    Eigen::Vector3d center_;
+    Eigen::Vector3d half_;
+    int dimension_;
+};
+
 } // namespace
 
 std::string obstacle_kind(const AnalyticObstacle& obstacle)
 {
-    return std::holds_alternative<PlaneObstacle>(obstacle) ? "plane" : "sphere";
+    return std::holds_alternative<PlaneObstacle>(obstacle) ? "plane"
+           : std::holds_alternative<SphereObstacle>(obstacle) ? "sphere"
+                                                               : "box";
 }
 
 std::shared_ptr<const CollisionBody> analytic_body(const AnalyticObstacle& obstacle, int dimension)
@@ -85,6 +133,15 @@ std::shared_ptr<const CollisionBody> analytic_body(const AnalyticObstacle& obsta
         if (!std::isfinite(plane->offset) || !std::isfinite(length) || !(length > 0.0))
             throw InputError("plane obstacle: normal must be nonzero and finite, offset finite");
         return std::make_shared<PlaneBody>(embedded(plane->normal / length), plane->offset / length, dimension);
+    }
+    if (const auto* box = std::get_if<BoxObstacle>(&obstacle)) {
+        if (box->lower.size() != dimension || box->upper.size() != dimension)
+            throw InputError("box obstacle: corners have " + std::to_string(box->lower.size()) + " and " +
+                             std::to_string(box->upper.size()) + " components, expected " + std::to_string(dimension));
+        if (!box->lower.allFinite() || !box->upper.allFinite() || !(box->lower.array() < box->upper.array()).all())
+            throw InputError("box obstacle: the corners must be finite and upper above lower in every axis");
+        return std::make_shared<BoxBody>(embedded(0.5 * (box->lower + box->upper)),
+                                         embedded(0.5 * (box->upper - box->lower)), dimension);
     }
     const auto& sphere = std::get<SphereObstacle>(obstacle);
     if (sphere.center.size() != dimension)

@@ -77,6 +77,38 @@ Particles<Dim> sample_box(const Eigen::Matrix<double, Dim, 1>& lower, const Eige
 }
 
 template <int Dim>
+Particles<Dim> sample_inside(const CollisionBody& body, const Eigen::Matrix<double, Dim, 1>& lower,
+                             const Eigen::Matrix<double, Dim, 1>& upper, const LatticeSampling<Dim>& sampling)
+{
+    using Vector = Eigen::Matrix<double, Dim, 1>;
+    check_sampling(sampling, "inside " + body.name());
+    if (body.dimension() != Dim)
+        throw InputError("inside " + body.name() + ": a " + std::to_string(body.dimension()) + "D body in a " +
+                         std::to_string(Dim) + "D scene");
+    if (!lower.allFinite() || !upper.allFinite() || !(lower.array() < upper.array()).all())
+        throw InputError("inside " + body.name() + ": its bounding box is empty or not finite");
+    const double h = sampling.dx / sampling.per_cell;
+    // Lattice indices k with (k + ½) h in [lower, upper]
+    Eigen::Matrix<long long, Dim, 1> first;
+    Vector extent;
+    for (int a = 0; a < Dim; ++a) {
+        first[a] = static_cast<long long>(std::floor(lower[a] / h));
+        extent[a] = (std::ceil(upper[a] / h) - static_cast<double>(first[a])) * h;
+    }
+    const auto n = lattice_counts<Dim>(extent, h, "inside " + body.name());
+    const double volume = std::pow(h, Dim);
+    Particles<Dim> particles;
+    for_each_lattice_point<Dim>(n, [&](const Eigen::Matrix<long long, Dim, 1>& i) {
+        const Vector x = ((first + i).template cast<double>() + Vector::Constant(0.5)) * h;
+        Eigen::Vector3d point = Eigen::Vector3d::Zero();
+        point.head<Dim>() = x;
+        if (body.distance(point).distance < 0.0)
+            particles.add(x, sampling.velocity, sampling.density * volume, volume, sampling.material);
+    });
+    return particles;
+}
+
+template <int Dim>
 Particles<Dim> sample_ball(const Eigen::Matrix<double, Dim, 1>& center, double radius,
                            const LatticeSampling<Dim>& sampling)
 {
@@ -128,6 +160,10 @@ Particles<Dim> sample_mesh_elements(const Mesh& mesh, double density)
 
 template Particles<2> sample_box<2>(const Eigen::Vector2d&, const Eigen::Vector2d&, const LatticeSampling<2>&);
 template Particles<3> sample_box<3>(const Eigen::Vector3d&, const Eigen::Vector3d&, const LatticeSampling<3>&);
+template Particles<2> sample_inside<2>(const CollisionBody&, const Eigen::Vector2d&, const Eigen::Vector2d&,
+                                      const LatticeSampling<2>&);
+template Particles<3> sample_inside<3>(const CollisionBody&, const Eigen::Vector3d&, const Eigen::Vector3d&,
+                                      const LatticeSampling<3>&);
 template Particles<2> sample_ball<2>(const Eigen::Vector2d&, double, const LatticeSampling<2>&);
 template Particles<3> sample_ball<3>(const Eigen::Vector3d&, double, const LatticeSampling<3>&);
 template Particles<2> sample_mesh_elements<2>(const Mesh&, double);

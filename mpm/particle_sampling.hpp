@@ -1,4 +1,5 @@
 #pragma once
+#include "sinew/bodies/collision_body.hpp"
 #include "sinew/mesh/mesh.hpp"
 #include "sinew/mpm/particles.hpp"
 
@@ -36,6 +37,16 @@ Particles<Dim> sample_box(const Eigen::Matrix<double, Dim, 1>& lower, const Eige
 template <int Dim>
 Particles<Dim> sample_ball(const Eigen::Matrix<double, Dim, 1>& center, double radius,
                            const LatticeSampling<Dim>& sampling);
+
+/// The lattice points (k + ½)·dx/per_cell (aligned with the grid) in the box
+/// [lower, upper] that lie inside `body` (φ < 0; a closed surface, a level
+/// set, an analytic body), each of volume (dx/per_cell)^Dim: their volumes
+/// approach the body's as the spacing shrinks. InputError as sample_box, and
+/// for a body of another dimension; an empty result when no lattice point
+/// lies inside (the caller says what that means).
+template <int Dim>
+Particles<Dim> sample_inside(const CollisionBody& body, const Eigen::Matrix<double, Dim, 1>& lower,
+                             const Eigen::Matrix<double, Dim, 1>& upper, const LatticeSampling<Dim>& sampling);
 
 /// One particle per element of a tetrahedral (3D) or planar triangle (2D)
 /// mesh, at its centroid, with the element's rest volume, its fiber when the

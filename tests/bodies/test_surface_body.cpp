@@ -3,6 +3,7 @@
 // a cube (face, edge and vertex regions, inside and out) and through the
 // shared derivative check, and one-line errors for surfaces that cannot
 // bound a volume.
+#include "sinew/bodies/analytic_obstacle.hpp"
 #include "sinew/bodies/surface_body.hpp"
 #include "sinew/core/input_error.hpp"
 #include "sinew/mesh/mesh.hpp"
@@ -109,4 +110,35 @@ TEST_CASE("a surface that cannot bound a volume is refused with one line naming 
         tets.kind = ElementKind::tetrahedron;
         CHECK_THROWS_WITH(SurfaceBody(tets, "tets"), Contains("triangle"));
     }
+}
+
+TEST_CASE("an analytic box gives the signed distance of the cube surface, and passes the shared derivative check")
+{
+    // The unit cube as an analytic box and as a closed triangle surface: the same φ and ∇φ everywhere.
+    const auto box = analytic_body(BoxObstacle{Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()}, 3);
+    const SurfaceBody surface(cube_surface(), "cube");
+    std::mt19937 rng(67);
+    std::uniform_real_distribution<double> position(-1.0, 2.0);
+    for (int sample = 0; sample < 1000; ++sample) {
+        const Eigen::Vector3d x(position(rng), position(rng), position(rng));
+        const BodyDistance analytic = box->distance(x);
+        const SurfaceDistance faceted = surface.query(x);
+        CAPTURE(x.transpose());
+        CHECK(analytic.distance == Approx(faceted.distance).margin(1e-12));
+        CHECK((analytic.gradient - faceted.gradient).norm() < 1e-9);
+    }
+    // The derivative check outside a face, an edge and a vertex, and inside.
+    const Eigen::Vector3d points[] = {{0.5, 0.5, 1.4}, {1.3, 0.4, 1.3}, {1.4, -0.3, 1.2}, {0.45, 0.6, 0.8}};
+    for (const Eigen::Vector3d& x : points) {
+        DistanceProblem problem(*box, x);
+        const DerivativeCheckReport report = check_derivatives(problem, x);
+        CAPTURE(x.transpose(), report.to_text());
+        CHECK(report.passed(1e-5));
+    }
+    // 2D: a rectangle.
+    const auto rectangle = analytic_body(BoxObstacle{Eigen::Vector2d(0, 0), Eigen::Vector2d(2, 1)}, 2);
+    CHECK(rectangle->distance(Eigen::Vector3d(3, 2, 0)).distance == Approx(std::sqrt(2.0)));
+    CHECK(rectangle->distance(Eigen::Vector3d(1, 0.25, 0)).distance == Approx(-0.25));
+    CHECK(rectangle->distance(Eigen::Vector3d(1, 0.25, 0)).gradient.isApprox(Eigen::Vector3d(0, -1, 0)));
+    CHECK_THROWS_AS(analytic_body(BoxObstacle{Eigen::Vector2d(0, 0), Eigen::Vector2d(2, 0)}, 2), InputError);
 }

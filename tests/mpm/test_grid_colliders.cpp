@@ -119,3 +119,30 @@ TEST_CASE("grid colliders: a rising floor lifts a block and carries it at its ow
     CHECK(v_z > 0.5 * rise);
     CHECK(lowest > 0.6 + rise * 1.6 - 0.1);  // above the floor but for a cell
 }
+
+TEST_CASE("grid colliders: a block dropped on a box bounces off its top face, not into it")
+{
+    const auto model = make_model<3, 3>("fixed-corotated", ParameterValues{{"mu", 1e4}, {"lambda", 2e4}});
+    const std::vector<const Model3d*> models{model.get()};
+    Particles<3> particles = falling_block(Eigen::Vector3d(1.0, 1.0, 1.0), Eigen::Vector3d::Zero());
+    // A table 0.5 m high under the block, wider than it.
+    Eigen::VectorXd lower = Eigen::Vector3d(0.8, 0.8, 0.0), upper = Eigen::Vector3d(1.6, 1.6, 0.5);
+    const auto table = std::make_shared<PlacedBody>(analytic_body(BoxObstacle{lower, upper}, 3));
+    MpmStepSettings<3> settings;
+    settings.time_step = 1e-3;
+    settings.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
+    settings.colliders.push_back({table, GridCondition::separate, Eigen::Vector3d::Zero(), 1.0});
+    SparseGrid<3> grid(0.1);
+    const double mass = total_mass(particles);
+    double lowest = 1e300, fastest_up = 0.0;
+    for (int n = 0; n < 1000; ++n) {
+        REQUIRE(explicit_step(particles, models, settings, grid).failure.empty());
+        for (const auto& x : particles.x)
+            lowest = std::min(lowest, x.z());
+        fastest_up = std::max(fastest_up, linear_momentum(particles).z() / mass);
+    }
+    CAPTURE(lowest, fastest_up);
+    CHECK(lowest > 0.5);        // never below the table's top
+    CHECK(lowest < 0.75);       // it fell 0.25 m onto it
+    CHECK(fastest_up > 0.5);    // and the top face turned it back up (it arrived at 2.2 m/s)
+}

@@ -194,3 +194,48 @@ TEST_CASE("mpm scenes: Sulsky's colliding disks keep their energy through the im
     CHECK(relative.dot(gap) > 0.0);
     CHECK(gap.norm() > 0.4);
 }
+
+TEST_CASE("mpm scenes: a collider moves at its velocity, a rising sticky floor lifts a block")
+{
+    const std::string text = R"({"mpm": {"dimension": 2, "dx": 0.05,
+      "materials": [{"name": "gel", "model": "stable-neo-hookean", "parameters": {"mu": 1e4, "lambda": 1e4}}],
+      "particles": [{"shape": "box", "lower": [0.3, 0.2], "upper": [0.5, 0.3], "material": "gel"}],
+      "colliders": [{"plane": {"point": [0, 0.2], "normal": [0, 1]}, "condition": "sticky", "velocity": [0, 0.5]}],
+      "stepping": "implicit", "time_step": 0.01, "duration": 0.4, "frames": 2}})";
+    const Scene scene = parse_scene(text, "scene.json");
+    SceneRunSettings settings;
+    settings.solver = "projected-newton";
+    const MpmRunOutcome outcome = run_mpm(*scene.mpm, settings);
+    CHECK(outcome.converged);
+    // The floor rises 0.2 m in 0.4 s and carries the block at its speed.
+    const double mass = total_mass(std::get<MpmSetup<2>>(scene.mpm->setup).particles);
+    CHECK(outcome.frames.back().linear_momentum[1] / mass == Approx(0.5).margin(0.05));
+    CHECK(outcome.frames.back().gravity_energy == 0.0);
+}
+
+TEST_CASE("mpm scenes: a lattice of particles fills a closed surface")
+{
+    // An icosphere of radius 0.2 (4 subdivisions, 5120 triangles) on a lattice of 0.02: ten spacings a radius.
+    const std::string text = R"({"mpm": {"dimension": 3, "dx": 0.04,
+      "materials": [{"name": "gel", "model": "fixed-corotated"}],
+      "particles": [{"shape": "surface", "material": "gel",
+                     "surface": {"generator": "icosphere", "center": [0.5, 0.5, 0.5], "radius": 0.2, "subdivisions": 4}}],
+      "time_step": 0.001, "duration": 0.01}})";
+    const Scene scene = parse_scene(text, "scene.json");
+    const Particles<3>& particles = std::get<MpmSetup<3>>(scene.mpm->setup).particles;
+    double volume = 0.0, farthest = 0.0;
+    for (int p = 0; p < particles.size(); ++p) {
+        volume += particles.volume[static_cast<std::size_t>(p)];
+        farthest = std::max(farthest, (particles.x[static_cast<std::size_t>(p)] - Eigen::Vector3d::Constant(0.5)).norm());
+    }
+    const double ball = 4.0 / 3.0 * M_PI * 0.008;
+    CAPTURE(particles.size(), volume / ball, farthest);
+    CHECK(volume == Approx(ball).epsilon(0.03));
+    CHECK(farthest < 0.2);
+    // A surface in a 2D scene is refused, naming it.
+    const std::string flat = R"({"mpm": {"dimension": 2, "dx": 0.04,
+      "materials": [{"name": "gel", "model": "fixed-corotated"}],
+      "particles": [{"shape": "surface", "material": "gel", "surface": "ball.obj"}],
+      "time_step": 0.001, "duration": 0.01}})";
+    CHECK_THAT(input_error(flat), Catch::Contains("a surface body needs a 3D scene"));
+}

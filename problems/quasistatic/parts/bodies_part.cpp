@@ -79,8 +79,8 @@ std::shared_ptr<const CollisionBody> level_set_body(const JsonCursor& l, const s
 
 std::shared_ptr<const CollisionBody> read_body(const JsonCursor& o, int dimension, const std::string& base_folder)
 {
-    if (o.has("surface") + o.has("level_set") + o.has("plane") + o.has("sphere") != 1)
-        o.fail("give exactly one of surface, level_set, plane, sphere");
+    if (o.has("surface") + o.has("level_set") + o.has("plane") + o.has("sphere") + o.has("box") != 1)
+        o.fail("give exactly one of surface, level_set, plane, sphere, box");
     for (const char* key : {"surface", "level_set"})
         if (o.has(key) && dimension != 3)
             o.at(key).fail(std::string("a ") + (key[0] == 's' ? "surface" : "level set") + " body needs a 3D scene");
@@ -96,6 +96,11 @@ std::shared_ptr<const CollisionBody> read_body(const JsonCursor& o, int dimensio
         p->expect_object({"point", "normal"});
         const Eigen::VectorXd point = p->at("point").vector(dimension), normal = p->at("normal").vector(dimension);
         return at_place(*p, [&] { return analytic_body(PlaneObstacle{normal, normal.dot(point)}, dimension); });
+    }
+    if (auto b = o.find("box")) {
+        b->expect_object({"lower", "upper"});
+        const Eigen::VectorXd lower = b->at("lower").vector(dimension), upper = b->at("upper").vector(dimension);
+        return at_place(*b, [&] { return analytic_body(BoxObstacle{lower, upper}, dimension); });
     }
     const JsonCursor s = o.at("sphere");
     s.expect_object({"center", "radius"});
@@ -172,6 +177,7 @@ public:
                  "the body's signed distance on an OpenVDB grid (first float level set grid of the file, or the surface converted; half_width 3 voxels), 3D scenes"},
                 {"[].plane", "object", "{point, normal}", "", "the half space n·(x − p) < 0 is the body"},
                 {"[].sphere", "object", "{center, radius}", "", "the ball |x − c| < r is the body"},
+                {"[].box", "object", "{lower, upper}", "", "the box lower < x < upper is the body (turned by rotation)"},
                 {"[].rotation", "object", "{axis, angle_deg, center}", "", "turns the body by R(θ) about c at load factor 1"},
                 {"[].translation", "vector", "", "0", "moves the body by t at load factor 1 (m)"},
                 {"[].curve", "keyframes", "[[t, s], …], t increasing", "dynamics.load_curve",

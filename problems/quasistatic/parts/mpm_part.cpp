@@ -1,12 +1,14 @@
 #include "sinew/problems/quasistatic/parts/scene_part.hpp"
 #include "sinew/problems/quasistatic/parts/scene_reading.hpp"
 
+#include "sinew/bodies/surface_body.hpp"
 #include "sinew/core/format_number.hpp"
 #include "sinew/energies/models/model_catalog.hpp"
 #include "sinew/mesh/read_mesh.hpp"
 #include "sinew/mpm/particle_sampling.hpp"
 #include "sinew/mpm/transfers.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -52,15 +54,17 @@ public:
                 {"materials[].parameters", "object", "", "the model's defaults", "the model's parameters"},
                 ranged({"materials[].density", "number", "(0, 1e8]", "1000", "ρ (kg/m³)"}, 0.0, 1e8),
                 {"particles", "array", "", "", "where particles are sampled, at least one source", true},
-                {"particles[].shape", "string", "box | ball | mesh", "", "a box, a ball (disk in 2D), or one particle per element of a mesh", true},
+                {"particles[].shape", "string", "box | ball | mesh | surface", "", "a box, a ball (disk in 2D), one particle per element of a mesh, or a lattice inside a closed surface", true},
                 {"particles[].lower", "vector", "", "", "box: lower corner (m)"},
                 {"particles[].upper", "vector", "", "", "box: upper corner (m)"},
                 {"particles[].center", "vector", "", "", "ball: centre (m)"},
                 ranged({"particles[].radius", "number", "(0, inf)", "", "ball: radius (m)"}, 0.0, HUGE_VAL),
                 {"particles[].file", "string", "", "", "mesh: a tet mesh (3D) or planar triangle mesh (2D), relative to the scene"},
+                {"particles[].surface", "string or object", "as bodies[].surface", "", "surface: a closed triangle surface (an OBJ file or a generator), 3D"},
                 {"particles[].material", "string", "materials[].name", "", "the particles' material", true},
                 ranged({"particles[].per_cell", "integer", "[1, 16]", "2", "box, ball: particles along each cell edge"}, 1, 16),
                 ranged({"particles[].velocity", "vector", "[-1e8, 1e8]", "0", "initial velocity (m/s)"}, -kMaxSpeed, kMaxSpeed),
+                {"particles[].fiber", "vector", "nonzero", "e₁ (mesh: the mesh's fibers)", "the fiber director a₀ in rest space, normalized (qr-anisotropic, muscle)"},
                 {"walls", "object", "", "none", "the domain's walls, applied to grid velocities"},
                 {"walls.lower", "vector", "", "", "lower corner of the domain (m)", true},
                 {"walls.upper", "vector", "", "", "upper corner of the domain (m)", true},
@@ -69,11 +73,12 @@ public:
                 {"colliders", "array", "", "none", "rigid bodies acting on the grid"},
                 {"colliders[].plane", "object", "{point, normal}", "", "the half space n·(x − p) < 0"},
                 {"colliders[].sphere", "object", "{center, radius}", "", "the ball |x − c| < r"},
+                {"colliders[].box", "object", "{lower, upper}", "", "the box lower < x < upper"},
                 {"colliders[].surface", "string or object", "as bodies[].surface", "", "a closed triangle surface, 3D"},
                 {"colliders[].level_set", "string or object", "as bodies[].level_set", "", "an OpenVDB signed distance, 3D"},
                 {"colliders[].name", "string", "", "the kind", "the collider's name in messages"},
                 {"colliders[].condition", "string", "sticky | slip | separate", "separate", "what it does to a node it holds"},
-                ranged({"colliders[].velocity", "vector", "[-1e8, 1e8]", "0", "the collider's velocity (m/s); its placement stays"}, -kMaxSpeed, kMaxSpeed),
+                ranged({"colliders[].velocity", "vector", "[-1e8, 1e8]", "0", "the collider's velocity (m/s): it moves at it from where the scene places it"}, -kMaxSpeed, kMaxSpeed),
                 ranged({"colliders[].thickness", "number", "[0, 100]", "1", "cells of dx outside the body whose nodes it holds"}, 0.0, 100.0),
                 {"stepping", "string", "explicit | implicit", "explicit", "symplectic Euler, or the grid-velocity NLP solved every step (solver: the scene's)"},
                 ranged({"time_step", "number", "(0, inf)", "", "Δt (s)", true}, 0.0, HUGE_VAL),
@@ -208,9 +213,16 @@ private:
         for (size_t i = 0; i < list.size(); ++i) {
             const JsonCursor o = list[i];
             declared.expect_object(o, "particles[]");
-            const Particles<Dim> source = at_place(o, [&] { return sample_source<Dim>(o, declared, materials, base_folder, dx); });
+            Particles<Dim> source = at_place(o, [&] { return sample_source<Dim>(o, declared, materials, base_folder, dx); });
             if (source.size() == 0)
                 o.fail("samples no particle");
+            if (auto f = o.find("fiber")) {
+                const Eigen::Matrix<double, Dim, 1> fiber = f->vector(Dim);
+                if (!(fiber.norm() > 0.0))
+                    f->fail("must be a nonzero vector");
+                for (auto& point : source.point)
+                    point.fiber = fiber.normalized();
+            }
             append(source, particles);
         }
         // Every particle within the grid's indices (the transfers would refuse it at the first step).
@@ -237,7 +249,7 @@ private:
         if (auto v = o.find("velocity"))
             sampling.velocity = vector_of<Dim>(*v, declared.at("particles[].velocity"));
         const auto allowed = [&](std::initializer_list<const char*> keys) {
-            for (const char* key : {"lower", "upper", "center", "radius", "file", "per_cell"})
+            for (const char* key : {"lower", "upper", "center", "radius", "file", "surface", "per_cell"})
                 if (o.has(key) && std::find_if(keys.begin(), keys.end(), [&](const char* k) { return std::string(k) == key; }) == keys.end())
                     o.at(key).fail("is not a key of shape '" + shape + "'");
         };
@@ -259,7 +271,13 @@ private:
             }
             return particles;
         }
-        o.at("shape").fail("unknown shape '" + shape + "'; valid: box, ball, mesh");
+        if (shape == "surface") {
+            allowed({"surface", "per_cell"});
+            const std::shared_ptr<const CollisionBody> body = read_body(o, Dim, base_folder);
+            const auto* surface = dynamic_cast<const SurfaceBody*>(body.get());
+            return sample_inside<Dim>(*body, surface->lower().head<Dim>(), surface->upper().head<Dim>(), sampling);
+        }
+        o.at("shape").fail("unknown shape '" + shape + "'; valid: box, ball, mesh, surface");
         return {};
     }
 

@@ -54,7 +54,7 @@ FaceShape face_shape(const JsonCursor& o);
 
 /// The collision body of an object with exactly one of "surface" (an OBJ
 /// file or a generator, 3D), "level_set" (a .vdb file or a surface
-/// converted, 3D), "plane" ({point, normal}) or "sphere" ({center, radius}),
+/// converted, 3D), "plane" ({point, normal}), "sphere" ({center, radius}) or "box" ({lower, upper}),
 /// as "bodies" and the colliders of "mpm" give it (docs/contact.md).
 std::shared_ptr<const CollisionBody> read_body(const JsonCursor& o, int dimension, const std::string& base_folder);
 
