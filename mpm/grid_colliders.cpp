@@ -18,15 +18,11 @@ void add_collider_contacts(const std::vector<GridCollider<Dim>>& colliders, cons
 template <int Dim>
 void apply_colliders(const std::vector<GridCollider<Dim>>& colliders, SparseGrid<Dim>& grid)
 {
-    std::vector<NodeContact<Dim>> contacts;
-    for (int slot = 0; slot < grid.slots(); ++slot) {
-        const auto s = static_cast<std::size_t>(slot);
-        if (!(grid.mass[s] > 0.0))
-            continue;
-        contacts.clear();
-        add_collider_contacts(colliders, grid.position(slot), grid.dx(), contacts);
-        grid.velocity[s] = conditioned_velocity(contacts, grid.velocity[s]);
-    }
+    apply_node_contacts(grid, [&](const Eigen::Matrix<double, Dim, 1>& x) {
+        std::vector<NodeContact<Dim>> contacts;
+        add_collider_contacts(colliders, x, grid.dx(), contacts);
+        return contacts;
+    });
 }
 
 template void add_collider_contacts<2>(const std::vector<GridCollider<2>>&, const Eigen::Vector2d&, double,

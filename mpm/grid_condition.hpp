@@ -1,4 +1,6 @@
 #pragma once
+#include "sinew/mpm/sparse_grid.hpp"
+
 #include <Eigen/Core>
 
 #include <string>
@@ -56,6 +58,18 @@ Eigen::Matrix<double, Dim, 1> conditioned_velocity(const std::vector<NodeContact
                 ? conditioned_velocity<Dim>(contact.condition, v, contact.velocity, contact.normal)
                 : contact.velocity;
     return v;
+}
+
+/// Every node of `grid` with mass takes the conditions of contacts_at(x_i)
+/// in turn: the one loop walls, colliders and a step's conditions share.
+template <int Dim, typename ContactsAt>
+void apply_node_contacts(SparseGrid<Dim>& grid, const ContactsAt& contacts_at)
+{
+    for (int slot = 0; slot < grid.slots(); ++slot) {
+        const auto s = static_cast<std::size_t>(slot);
+        if (grid.mass[s] > 0.0)
+            grid.velocity[s] = conditioned_velocity<Dim>(contacts_at(grid.position(slot)), grid.velocity[s]);
+    }
 }
 
 } // namespace sinew

@@ -155,7 +155,8 @@ Eigen::VectorXd GridVelocityNlp<Dim>::starting_point() const
     for (int k = 0; k < nodes(); ++k) {
         const auto i = static_cast<std::size_t>(k);
         const NodeVelocityFrame<Dim>& frame = frames_[i];
-        y.segment(first_variable_[i], frame.basis.cols()) = frame.basis.transpose() * (target_[i] - frame.offset);
+        if (frame.basis.cols() > 0)
+            y.segment(first_variable_[i], frame.basis.cols()) = frame.basis.transpose() * (target_[i] - frame.offset);
     }
     return y;
 }
@@ -165,6 +166,8 @@ typename GridVelocityNlp<Dim>::NodeVector GridVelocityNlp<Dim>::velocity(int nod
 {
     const auto i = static_cast<std::size_t>(node);
     const NodeVelocityFrame<Dim>& frame = frames_[i];
+    if (frame.basis.cols() == 0)
+        return frame.offset;  // held at v_b (an empty B has no data to multiply)
     return frame.offset + frame.basis * y.segment(first_variable_[i], frame.basis.cols());  // v = offset + B y
 }
 
@@ -242,7 +245,8 @@ void GridVelocityNlp<Dim>::gradient(ConstVectorRef y, VectorRef grad)
     }
     for (int k = 0; k < nodes(); ++k) {
         const auto i = static_cast<std::size_t>(k);
-        grad.segment(first_variable_[i], frames_[i].basis.cols()) = frames_[i].basis.transpose() * gradient_v[i];  // Bᵀ ∂E/∂v
+        if (frames_[i].basis.cols() > 0)
+            grad.segment(first_variable_[i], frames_[i].basis.cols()) = frames_[i].basis.transpose() * gradient_v[i];  // Bᵀ ∂E/∂v
     }
 }
 

@@ -33,15 +33,11 @@ void add_wall_contacts(const GridWalls<Dim>& walls, const Eigen::Matrix<double, 
 template <int Dim>
 void apply_walls(const GridWalls<Dim>& walls, SparseGrid<Dim>& grid)
 {
-    std::vector<NodeContact<Dim>> contacts;
-    for (int slot = 0; slot < grid.slots(); ++slot) {
-        const auto s = static_cast<std::size_t>(slot);
-        if (!(grid.mass[s] > 0.0))
-            continue;
-        contacts.clear();
-        add_wall_contacts(walls, grid.position(slot), grid.dx(), contacts);
-        grid.velocity[s] = conditioned_velocity(contacts, grid.velocity[s]);
-    }
+    apply_node_contacts(grid, [&](const Eigen::Matrix<double, Dim, 1>& x) {
+        std::vector<NodeContact<Dim>> contacts;
+        add_wall_contacts(walls, x, grid.dx(), contacts);
+        return contacts;
+    });
 }
 
 template struct GridWalls<2>;

@@ -16,13 +16,8 @@ std::vector<NodeContact<Dim>> node_contacts(const MpmStepSettings<Dim>& settings
 template <int Dim>
 void apply_grid_conditions(const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid)
 {
-    if (!settings.walls && settings.colliders.empty())
-        return;
-    for (int slot = 0; slot < grid.slots(); ++slot) {
-        const auto s = static_cast<std::size_t>(slot);
-        if (grid.mass[s] > 0.0)
-            grid.velocity[s] = conditioned_velocity(node_contacts(settings, grid.position(slot), grid.dx()), grid.velocity[s]);
-    }
+    if (settings.walls || !settings.colliders.empty())
+        apply_node_contacts(grid, [&](const Eigen::Matrix<double, Dim, 1>& x) { return node_contacts(settings, x, grid.dx()); });
 }
 
 template <int Dim>
