@@ -36,14 +36,6 @@ SplineValues cubic(double u)
 
 double apic_inertia_factor(SplineOrder order) { return order == SplineOrder::quadratic ? 0.25 : 1.0 / 3.0; }
 
-/// The first node along one axis: floor(x/dx − ½) for quadratic, floor(x/dx) − 1
-/// for cubic, so that the particle lies within the stencil's middle cell(s).
-int first_node(double cells, SplineOrder order)
-{
-    return order == SplineOrder::quadratic ? static_cast<int>(std::floor(cells - 0.5))
-                                           : static_cast<int>(std::floor(cells)) - 1;
-}
-
 template <int Dim>
 Eigen::Matrix<int, Dim, 1> stencil_base(const Eigen::Matrix<double, Dim, 1>& x, double dx, SplineOrder order)
 {
@@ -62,15 +54,8 @@ BSplineStencil<Dim> bspline_weights(const Eigen::Matrix<double, Dim, 1>& x, doub
     stencil.width = 3;
     for (int a = 0; a < Dim; ++a) {
         const double cells = x[a] / dx;
-        const int base = first_node(cells, order);
-        stencil.base[a] = base;
-        // The branches quadratic(u) takes at u = cells − (base + k), k = 0, 1, 2 (u ∈ [½, 3/2), [−½, ½), [−3/2, −½)).
-        const double r0 = cells - static_cast<double>(base);
-        const double u1 = cells - static_cast<double>(base + 1);
-        const double r2 = -(cells - static_cast<double>(base + 2));
-        stencil.N[a][0] = 0.5 * (1.5 - r0) * (1.5 - r0);
-        stencil.N[a][1] = 0.75 - u1 * u1;
-        stencil.N[a][2] = 0.5 * (1.5 - r2) * (1.5 - r2);
+        stencil.base[a] = first_node(cells, order);
+        quadratic_weights(cells, stencil.base[a], stencil.N[a].data());
     }
     return stencil;
 }

@@ -2,6 +2,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <cmath>
 
 namespace sinew {
 
@@ -68,6 +69,28 @@ struct BSplineStencil {
         }
     }
 };
+
+/// The first node of a stencil along one axis, x/dx = cells: ⌊cells − ½⌋
+/// (quadratic) or ⌊cells⌋ − 1 (cubic), so that the particle lies within
+/// the stencil's middle cell(s).
+inline int first_node(double cells, SplineOrder order)
+{
+    return order == SplineOrder::quadratic ? static_cast<int>(std::floor(cells - 0.5))
+                                           : static_cast<int>(std::floor(cells)) - 1;
+}
+
+/// The quadratic B-spline's weights N of the nodes base, base + 1, base + 2
+/// along one axis (base = first_node(cells)): the branches the spline
+/// takes there, u ∈ [½, 3/2), [−½, ½), [−3/2, −½).
+inline void quadratic_weights(double cells, int base, double* N)
+{
+    const double r0 = cells - static_cast<double>(base);
+    const double u1 = cells - static_cast<double>(base + 1);
+    const double r2 = -(cells - static_cast<double>(base + 2));
+    N[0] = 0.5 * (1.5 - r0) * (1.5 - r0);
+    N[1] = 0.75 - u1 * u1;
+    N[2] = 0.5 * (1.5 - r2) * (1.5 - r2);
+}
 
 /// The stencil of a particle at x on the grid of spacing dx.
 template <int Dim>

@@ -1,7 +1,7 @@
 #include "sinew/mpm/explicit_step.hpp"
 
 #include "sinew/core/input_error.hpp"
-#include "sinew/mpm/particle_buckets.hpp"
+#include "sinew/mpm/transfers.hpp"
 
 #include <Eigen/LU>
 
@@ -14,33 +14,43 @@
 namespace sinew {
 namespace {
 
-/// P of every particle, runs of one material evaluated together
-/// (evaluate_batch: the 3×3 models fill SIMD lanes), in parallel. Empty when
-/// every ψ and P is finite, else the lowest particle whose is not.
+/// The stress impulse of every particle, S_p = −Δt V_p⁰ D_p⁻¹ P(F_p) F_pᵀ,
+/// its momentum per unit of w_ip (x_i − x_p) (the MLS stress divergence,
+/// f_i = Σ_p S_p (x_i − x_p) w_ip / Δt), scattered with the particles'
+/// momentum. P in runs of one material (evaluate_batch: the 3×3 models fill
+/// SIMD lanes), in parallel. Empty when every ψ and P is finite, else the
+/// lowest particle whose is not.
 template <int Dim>
-std::string particle_stresses(const Particles<Dim>& particles, const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
-                              std::vector<typename Particles<Dim>::Matrix>& stress)
+std::string stress_impulses(const Particles<Dim>& particles, const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
+                            const MpmStepSettings<Dim>& settings, double dx,
+                            std::vector<typename Particles<Dim>::Matrix>& impulse)
 {
     constexpr int kRun = 64;  // particles a call
     const int count = particles.size();
-    stress.resize(static_cast<std::size_t>(count));
+    impulse.resize(static_cast<std::size_t>(count));
     std::vector<double> psi(static_cast<std::size_t>(count));
+    const double inverse_D = 1.0 / (apic_inertia_factor(settings.transfer.order) * dx * dx);
     const int runs = (count + kRun - 1) / kRun;
 #pragma omp parallel for schedule(dynamic, 4)
     for (int run = 0; run < runs; ++run) {
-        for (int first = run * kRun, end = std::min(count, first + kRun); first < end;) {
+        const int run_end = std::min(count, (run + 1) * kRun);
+        for (int first = run * kRun; first < run_end;) {
             const int material = particles.material[static_cast<std::size_t>(first)];
             int last = first + 1;
-            while (last < end && particles.material[static_cast<std::size_t>(last)] == material)
+            while (last < run_end && particles.material[static_cast<std::size_t>(last)] == material)
                 ++last;
             const auto f = static_cast<std::size_t>(first);
             models[static_cast<std::size_t>(material)]->evaluate_batch(last - first, &particles.F[f], &particles.point[f],
-                                                                        &psi[f], &stress[f], nullptr, Projection::none);
+                                                                        &psi[f], &impulse[f], nullptr, Projection::none);
             first = last;
+        }
+        for (int p = run * kRun; p < run_end; ++p) {
+            const auto i = static_cast<std::size_t>(p);
+            impulse[i] = (-settings.time_step * particles.volume[i] * inverse_D) * impulse[i] * particles.F[i].transpose();
         }
     }
     for (int p = 0; p < count; ++p)
-        if (!std::isfinite(psi[static_cast<std::size_t>(p)]) || !stress[static_cast<std::size_t>(p)].allFinite()) {
+        if (!std::isfinite(psi[static_cast<std::size_t>(p)]) || !impulse[static_cast<std::size_t>(p)].allFinite()) {
             std::ostringstream failure;
             failure << "particle " << p << ": the stress is not finite at det F = "
                     << particles.F[static_cast<std::size_t>(p)].determinant();
@@ -49,49 +59,16 @@ std::string particle_stresses(const Particles<Dim>& particles, const std::vector
     return {};
 }
 
-/// Adds the MLS stress divergence times Δt to the grid's momentum,
-/// (m v)_i += Δt f_i, bucket by bucket (particle_buckets.hpp). Empty when
-/// every stress was finite, else which was not.
+/// v_i ← v_i + Δt g where m_i > 0.
 template <int Dim>
-std::string add_stress_impulses(const Particles<Dim>& particles,
-                                const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
-                                const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid)
-{
-    using Matrix = typename Particles<Dim>::Matrix;
-    using Bucket = typename ParticleBuckets<Dim>::Bucket;
-    std::vector<Matrix> stress;
-    const std::string failure = particle_stresses(particles, models, stress);
-    if (!failure.empty())
-        return failure;
-    const double dx = grid.dx();
-    const double inverse_D = 1.0 / (apic_inertia_factor(settings.transfer.order) * dx * dx);
-    const ParticleBuckets<Dim> buckets = bucket_particles(particles, settings.transfer.order, grid);
-    for_each_bucket_by_colour(buckets, [&](const Bucket& bucket) {
-        for (int j = bucket.first; j < bucket.last; ++j) {
-            const auto i = static_cast<std::size_t>(buckets.order[static_cast<std::size_t>(j)]);
-            // −Δt V_p⁰ P Fᵀ D⁻¹: the particle's impulse per unit of w_ip (x_i − x_p)
-            const Matrix impulse =
-                -settings.time_step * particles.volume[i] * inverse_D * stress[i] * particles.F[i].transpose();
-            const BSplineStencil<Dim> stencil = bspline_weights<Dim>(particles.x[i], dx, settings.transfer.order);
-            for_each_stencil_node<Dim>(bucket, stencil, particles.x[i], dx,
-                                       [&](int slot, double w, const typename Particles<Dim>::Vector& d) {
-                                           grid.momentum[static_cast<std::size_t>(slot)] += w * impulse * d;
-                                       });
-        }
-    });
-    return {};
-}
-
-/// v_i = (m v)_i / m_i + Δt g where m_i > 0.
-template <int Dim>
-void update_grid_velocity(const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid)
+void add_gravity(const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid)
 {
     const int slots = grid.slots();
 #pragma omp parallel for schedule(static)
     for (int slot = 0; slot < slots; ++slot) {
         const auto s = static_cast<std::size_t>(slot);
         if (grid.mass[s] > 0.0)
-            grid.velocity[s] = grid.momentum[s] / grid.mass[s] + settings.time_step * settings.gravity;
+            grid.velocity[s] += settings.time_step * settings.gravity;
     }
 }
 
@@ -115,16 +92,17 @@ ExplicitStepReport explicit_step(Particles<Dim>& particles, const std::vector<co
         clock = now;
         return seconds;
     };
-    particles_to_grid(particles, settings.transfer, grid);
-    report.to_grid_s = lap();
-    report.failure = add_stress_impulses(particles, models, settings, grid);
+    std::vector<typename Particles<Dim>::Matrix> impulses;
+    report.failure = stress_impulses(particles, models, settings, grid.dx(), impulses);
     report.stress_s = lap();
     if (!report.failure.empty())
         return report;
-    update_grid_velocity(settings, grid);
+    const ParticleBuckets<Dim> layout = particles_to_grid(particles, settings.transfer, grid, &impulses);
+    report.to_grid_s = lap();
+    add_gravity(settings, grid);
     apply_grid_conditions(settings, grid);
     report.grid_update_s = lap();
-    advect_particles(settings, grid, particles);
+    advect_particles(settings, grid, layout, particles);
     report.to_particles_s = lap();
     return report;
 }

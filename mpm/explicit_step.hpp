@@ -11,17 +11,17 @@ namespace sinew {
 /// finite; and the wall time of its phases (s), for the benchmark.
 struct ExplicitStepReport {
     std::string failure;
-    double to_grid_s = 0.0;       ///< particles_to_grid
-    double stress_s = 0.0;        ///< the MLS stress divergence, P of every particle
+    double stress_s = 0.0;        ///< P of every particle and its stress impulse
+    double to_grid_s = 0.0;       ///< particles_to_grid: the grid's layout and one scatter of mass, momentum and impulses
     double grid_update_s = 0.0;   ///< v_i from momentum and gravity, walls and colliders
     double to_particles_s = 0.0;  ///< grid_to_particles and advection
 };
 
 /// One explicit (symplectic Euler) MLS-MPM step (Hu et al. 2018, "A moving
 /// least squares material point method", §4):
-///   particles_to_grid: m_i, (m v)_i;
-///   grid forces, the MLS stress divergence
-///     f_i = −Σ_p V_p⁰ P(F_p) F_pᵀ D_p⁻¹ (x_i − x_p) w_ip;
+///   the MLS stress divergence f_i = −Σ_p V_p⁰ P(F_p) F_pᵀ D_p⁻¹ (x_i − x_p) w_ip,
+///   scattered with the momentum in one particles_to_grid: m_i and
+///   (m v)_i + Δt f_i;
 ///   grid update v_i ← ((m v)_i + Δt f_i)/m_i + Δt g on nodes with mass,
 ///   then finish_step: the walls' and the colliders' conditions,
 ///   grid_to_particles (v_p, C_p) and advection of x_p and F_p.

@@ -12,7 +12,7 @@ ImplicitStepReport implicit_step(Particles<Dim>& particles, const std::vector<co
                                  const GridVelocitySolve& solve)
 {
     ImplicitStepReport report;
-    particles_to_grid(particles, settings.transfer, grid);
+    const ParticleBuckets<Dim> layout = particles_to_grid(particles, settings.transfer, grid);
     GridVelocityNlp<Dim> nlp(particles, models, grid, settings);
     report.unknowns = nlp.num_variables();
     Eigen::VectorXd v = nlp.starting_point();
@@ -23,7 +23,7 @@ ImplicitStepReport implicit_step(Particles<Dim>& particles, const std::vector<co
     report.converged = nlp.num_variables() == 0 || solve(nlp, v);  // every node held: nothing to solve
     for (int k = 0; k < nlp.nodes(); ++k)
         grid.velocity[static_cast<std::size_t>(nlp.slot(k))] = nlp.velocity(k, v);
-    finish_step(settings, grid, particles);
+    finish_step(settings, grid, layout, particles);
     return report;
 }
 

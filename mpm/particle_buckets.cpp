@@ -2,75 +2,88 @@
 
 #include "sinew/mpm/transfers.hpp"
 
-#include <stdexcept>
-
 namespace sinew {
+namespace {
 
+/// Whether a stencil based in a block reaches the neighbour at `corner`:
+/// along every axis a with bit a set, some particle's base lies within
+/// `reach` nodes of the block's upper end (highest[a] + reach ≥ 4).
 template <int Dim>
-void touch_stencil_blocks(const Particles<Dim>& particles, SplineOrder order, SparseGrid<Dim>& grid)
+bool reaches(const typename SparseGrid<Dim>::Index& highest, int reach, int corner)
 {
-    using Index = typename SparseGrid<Dim>::Index;
-    const int reach = stencil_width(order) - 1;
-    for (int p = 0; p < particles.size(); ++p) {
-        check_in_grid(particles, p, grid.dx());
-        const Index base = stencil_base<Dim>(particles.x[static_cast<std::size_t>(p)], grid.dx(), order);
-        for (int corner = 0; corner < (1 << Dim); ++corner) {
-            Index node = base;
-            for (int a = 0; a < Dim; ++a)
-                node[a] += (corner >> a) & 1 ? reach : 0;
-            grid.touch(node);
-        }
-    }
+    for (int a = 0; a < Dim; ++a)
+        if (((corner >> a) & 1) && highest[a] + reach < SparseGrid<Dim>::kBlockWidth)
+            return false;
+    return true;
 }
 
+} // namespace
+
 template <int Dim>
-ParticleBuckets<Dim> bucket_particles(const Particles<Dim>& particles, SplineOrder order, const SparseGrid<Dim>& grid)
+ParticleBuckets<Dim> lay_out_grid(const Particles<Dim>& particles, SplineOrder order, SparseGrid<Dim>& grid)
 {
     using Index = typename SparseGrid<Dim>::Index;
-    ParticleBuckets<Dim> out;
-    // Each particle's base block, by number; then a stable counting sort by it.
-    std::vector<int> block_of_particle(static_cast<std::size_t>(particles.size()));
-    std::vector<int> count(static_cast<std::size_t>(grid.blocks()) + 1, 0);
-    for (int p = 0; p < particles.size(); ++p) {
+    constexpr int kWidth = SparseGrid<Dim>::kBlockWidth;
+    grid.clear();
+    const int count = particles.size();
+    // Each particle's base block, numbered by the grid as first reached: the
+    // bases' blocks come first, so a base block's number is its bucket's.
+    std::vector<int> bucket_of(static_cast<std::size_t>(count));
+    std::vector<Index> highest;  // per bucket, the highest base in the block along each axis (0 … 3)
+    Index previous_block = Index::Zero();
+    int previous = -1;
+    for (int p = 0; p < count; ++p) {
+        check_in_grid(particles, p, grid.dx());
         const Index base = stencil_base<Dim>(particles.x[static_cast<std::size_t>(p)], grid.dx(), order);
-        const int block = grid.block_number(SparseGrid<Dim>::block_of(base));
-        if (block < 0)
-            throw std::logic_error("bucket_particles: particle " + std::to_string(p) + "'s block is not on the grid");
-        block_of_particle[static_cast<std::size_t>(p)] = block;
-        ++count[static_cast<std::size_t>(block) + 1];
+        const Index block = SparseGrid<Dim>::block_of(base);
+        if (previous < 0 || block != previous_block) {
+            previous = grid.touch(block * kWidth) / SparseGrid<Dim>::kBlockNodes;
+            previous_block = block;
+            if (previous == static_cast<int>(highest.size()))
+                highest.push_back(Index::Zero());
+        }
+        bucket_of[static_cast<std::size_t>(p)] = previous;
+        Index& top = highest[static_cast<std::size_t>(previous)];
+        top = top.cwiseMax(base - block * kWidth);
     }
-    for (std::size_t b = 1; b < count.size(); ++b)
-        count[b] += count[b - 1];
-    out.order.resize(static_cast<std::size_t>(particles.size()));
-    std::vector<int> next(count.begin(), count.end() - 1);
-    for (int p = 0; p < particles.size(); ++p)
-        out.order[static_cast<std::size_t>(next[static_cast<std::size_t>(block_of_particle[static_cast<std::size_t>(p)])]++)] = p;
-    for (int block = 0; block < grid.blocks(); ++block) {
-        const int first = count[static_cast<std::size_t>(block)], last = count[static_cast<std::size_t>(block) + 1];
-        if (first == last)
-            continue;
-        typename ParticleBuckets<Dim>::Bucket bucket;
-        bucket.block = SparseGrid<Dim>::block_of(grid.node(block * SparseGrid<Dim>::kBlockNodes));
-        bucket.first = first;
-        bucket.last = last;
-        int colour = 0;
-        for (int a = 0; a < Dim; ++a)
-            colour |= (bucket.block[a] & 1) << a;
+    ParticleBuckets<Dim> out;
+    const int reach = stencil_width(order) - 1;
+    const int bucket_count = static_cast<int>(highest.size());
+    out.buckets.resize(static_cast<std::size_t>(bucket_count));
+    for (int b = 0; b < bucket_count; ++b) {
+        auto& bucket = out.buckets[static_cast<std::size_t>(b)];
+        bucket.block = SparseGrid<Dim>::block_of(grid.node(b * SparseGrid<Dim>::kBlockNodes));
         for (int corner = 0; corner < ParticleBuckets<Dim>::kCorners; ++corner) {
             Index neighbour = bucket.block;
             for (int a = 0; a < Dim; ++a)
                 neighbour[a] += (corner >> a) & 1;
-            bucket.neighbours[static_cast<std::size_t>(corner)] = grid.block_number(neighbour);
+            bucket.neighbours[static_cast<std::size_t>(corner)] =
+                reaches<Dim>(highest[static_cast<std::size_t>(b)], reach, corner)
+                    ? grid.touch(neighbour * kWidth) / SparseGrid<Dim>::kBlockNodes
+                    : -1;
         }
-        out.colours[static_cast<std::size_t>(colour)].push_back(static_cast<int>(out.buckets.size()));
-        out.buckets.push_back(bucket);
+        int colour = 0;
+        for (int a = 0; a < Dim; ++a)
+            colour |= (bucket.block[a] & 1) << a;
+        out.colours[static_cast<std::size_t>(colour)].push_back(b);
     }
+    // A stable counting sort of the particles by bucket.
+    std::vector<int> start(static_cast<std::size_t>(bucket_count) + 1, 0);
+    for (const int b : bucket_of)
+        ++start[static_cast<std::size_t>(b) + 1];
+    for (std::size_t b = 1; b < start.size(); ++b)
+        start[b] += start[b - 1];
+    for (int b = 0; b < bucket_count; ++b) {
+        out.buckets[static_cast<std::size_t>(b)].first = start[static_cast<std::size_t>(b)];
+        out.buckets[static_cast<std::size_t>(b)].last = start[static_cast<std::size_t>(b) + 1];
+    }
+    out.order.resize(static_cast<std::size_t>(count));
+    for (int p = 0; p < count; ++p)
+        out.order[static_cast<std::size_t>(start[static_cast<std::size_t>(bucket_of[static_cast<std::size_t>(p)])]++)] = p;
     return out;
 }
 
-template void touch_stencil_blocks<2>(const Particles<2>&, SplineOrder, SparseGrid<2>&);
-template void touch_stencil_blocks<3>(const Particles<3>&, SplineOrder, SparseGrid<3>&);
-template ParticleBuckets<2> bucket_particles<2>(const Particles<2>&, SplineOrder, const SparseGrid<2>&);
-template ParticleBuckets<3> bucket_particles<3>(const Particles<3>&, SplineOrder, const SparseGrid<3>&);
+template ParticleBuckets<2> lay_out_grid<2>(const Particles<2>&, SplineOrder, SparseGrid<2>&);
+template ParticleBuckets<3> lay_out_grid<3>(const Particles<3>&, SplineOrder, SparseGrid<3>&);
 
 } // namespace sinew

@@ -21,10 +21,11 @@ void apply_grid_conditions(const MpmStepSettings<Dim>& settings, SparseGrid<Dim>
 }
 
 template <int Dim>
-void advect_particles(const MpmStepSettings<Dim>& settings, const SparseGrid<Dim>& grid, Particles<Dim>& particles)
+void advect_particles(const MpmStepSettings<Dim>& settings, const SparseGrid<Dim>& grid, const ParticleBuckets<Dim>& layout,
+                      Particles<Dim>& particles)
 {
     using Matrix = typename Particles<Dim>::Matrix;
-    grid_to_particles(grid, settings.transfer, particles);
+    grid_to_particles(grid, layout, settings.transfer, particles);
     const double h = settings.time_step;
     const int count = particles.size();
 #pragma omp parallel for schedule(static)
@@ -36,19 +37,20 @@ void advect_particles(const MpmStepSettings<Dim>& settings, const SparseGrid<Dim
 }
 
 template <int Dim>
-void finish_step(const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid, Particles<Dim>& particles)
+void finish_step(const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid, const ParticleBuckets<Dim>& layout,
+                 Particles<Dim>& particles)
 {
     apply_grid_conditions(settings, grid);
-    advect_particles(settings, grid, particles);
+    advect_particles(settings, grid, layout, particles);
 }
 
 template std::vector<NodeContact<2>> node_contacts<2>(const MpmStepSettings<2>&, const Eigen::Vector2d&, double);
 template std::vector<NodeContact<3>> node_contacts<3>(const MpmStepSettings<3>&, const Eigen::Vector3d&, double);
 template void apply_grid_conditions<2>(const MpmStepSettings<2>&, SparseGrid<2>&);
 template void apply_grid_conditions<3>(const MpmStepSettings<3>&, SparseGrid<3>&);
-template void advect_particles<2>(const MpmStepSettings<2>&, const SparseGrid<2>&, Particles<2>&);
-template void advect_particles<3>(const MpmStepSettings<3>&, const SparseGrid<3>&, Particles<3>&);
-template void finish_step<2>(const MpmStepSettings<2>&, SparseGrid<2>&, Particles<2>&);
-template void finish_step<3>(const MpmStepSettings<3>&, SparseGrid<3>&, Particles<3>&);
+template void advect_particles<2>(const MpmStepSettings<2>&, const SparseGrid<2>&, const ParticleBuckets<2>&, Particles<2>&);
+template void advect_particles<3>(const MpmStepSettings<3>&, const SparseGrid<3>&, const ParticleBuckets<3>&, Particles<3>&);
+template void finish_step<2>(const MpmStepSettings<2>&, SparseGrid<2>&, const ParticleBuckets<2>&, Particles<2>&);
+template void finish_step<3>(const MpmStepSettings<3>&, SparseGrid<3>&, const ParticleBuckets<3>&, Particles<3>&);
 
 } // namespace sinew

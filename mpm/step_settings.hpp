@@ -31,13 +31,15 @@ std::vector<NodeContact<Dim>> node_contacts(const MpmStepSettings<Dim>& settings
 template <int Dim>
 void apply_grid_conditions(const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid);
 
-/// grid_to_particles (v_p, C_p), then advection x_p ← x_p + Δt v_p and
-/// F_p ← (I + Δt C_p) F_p.
+/// grid_to_particles (v_p, C_p) on the step's layout, then advection
+/// x_p ← x_p + Δt v_p and F_p ← (I + Δt C_p) F_p.
 template <int Dim>
-void advect_particles(const MpmStepSettings<Dim>& settings, const SparseGrid<Dim>& grid, Particles<Dim>& particles);
+void advect_particles(const MpmStepSettings<Dim>& settings, const SparseGrid<Dim>& grid, const ParticleBuckets<Dim>& layout,
+                      Particles<Dim>& particles);
 
 /// The end of every step once the grid velocity is known: apply_grid_conditions, then advect_particles.
 template <int Dim>
-void finish_step(const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid, Particles<Dim>& particles);
+void finish_step(const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid, const ParticleBuckets<Dim>& layout,
+                 Particles<Dim>& particles);
 
 } // namespace sinew

@@ -1,7 +1,10 @@
 #pragma once
 #include "sinew/mpm/bspline_stencil.hpp"
+#include "sinew/mpm/particle_buckets.hpp"
 #include "sinew/mpm/particles.hpp"
 #include "sinew/mpm/sparse_grid.hpp"
+
+#include <vector>
 
 namespace sinew {
 
@@ -18,21 +21,29 @@ struct TransferSettings {
     double flip_ratio = 0.95;
 };
 
-/// The particle-to-grid transfer on a cleared grid:
-///   m_i = Σ_p w_ip m_p,  (m v)_i = Σ_p w_ip m_p (v_p + C_p (x_i − x_p))
-/// (C_p = 0 for PIC/FLIP), and v_i = (m v)_i / m_i where m_i > 0, written to
-/// both velocity and velocity_transferred. Throws InputError naming the
-/// first particle whose stencil leaves the grid's indices.
+/// The particle-to-grid transfer: lays the grid out for the particles
+/// (lay_out_grid) and scatters
+///   m_i = Σ_p w_ip m_p,  (m v)_i = Σ_p w_ip (m_p v_p + (m_p C_p + S_p)(x_i − x_p))
+/// (C_p = 0 for PIC/FLIP), with S_p the particles' impulses when given (the
+/// explicit step's stress, −Δt V_p⁰ D_p⁻¹ P Fᵀ: MLS-MPM's one scatter) and 0
+/// otherwise; then v_i = (m v)_i / m_i where m_i > 0. PIC/FLIP also writes
+/// velocity_transferred, v_i without the impulses (FLIP's increment reads
+/// it). Returns the step's layout, for grid_to_particles. Throws InputError
+/// naming the first particle whose stencil leaves the grid's indices.
 template <int Dim>
-void particles_to_grid(const Particles<Dim>& particles, const TransferSettings& settings, SparseGrid<Dim>& grid);
+ParticleBuckets<Dim> particles_to_grid(const Particles<Dim>& particles, const TransferSettings& settings,
+                                       SparseGrid<Dim>& grid,
+                                       const std::vector<typename Particles<Dim>::Matrix>* impulses = nullptr);
 
-/// The grid-to-particle transfer of the grid's velocity:
+/// The grid-to-particle transfer of the grid's velocity, on the layout
+/// particles_to_grid returned for these particles:
 ///   v_p = Σ_i w_ip v_i  (APIC and PIC; PIC/FLIP blends in α times
 ///   FLIP's v_p + Σ_i w_ip (v_i − v_i transferred)),
 ///   C_p = Σ_i w_ip v_i (x_i − x_p)ᵀ D_p⁻¹,  D_p = σ dx² I (apic_inertia_factor),
 /// the MLS velocity gradient, exact for affine grid velocities.
 template <int Dim>
-void grid_to_particles(const SparseGrid<Dim>& grid, const TransferSettings& settings, Particles<Dim>& particles);
+void grid_to_particles(const SparseGrid<Dim>& grid, const ParticleBuckets<Dim>& layout, const TransferSettings& settings,
+                       Particles<Dim>& particles);
 
 /// InputError naming particle p and its position when the grid cannot hold
 /// its stencil (a coordinate not finite, or beyond 2²⁰ − 4 cells of dx).

@@ -170,7 +170,7 @@ TEST_CASE("implicit MPM: F_p(v) of the NLP is the F the transfers and the advect
     MpmStepSettings<3> settings;
     settings.time_step = 0.01;
     SparseGrid<3> grid(0.1);
-    particles_to_grid(particles, settings.transfer, grid);
+    const ParticleBuckets<3> layout = particles_to_grid(particles, settings.transfer, grid);
     GridVelocityNlp<3> nlp(particles, models, grid, settings);
     Eigen::VectorXd v = nlp.starting_point() + Eigen::VectorXd::Random(nlp.num_variables());
     std::vector<Eigen::Matrix3d> expected;
@@ -178,7 +178,7 @@ TEST_CASE("implicit MPM: F_p(v) of the NLP is the F the transfers and the advect
         expected.push_back(nlp.deformation(p, v));
     for (int k = 0; k < nlp.nodes(); ++k)
         grid.velocity[static_cast<std::size_t>(nlp.slot(k))] = nlp.velocity(k, v);
-    finish_step(settings, grid, particles);
+    finish_step(settings, grid, layout, particles);
     for (int p = 0; p < particles.size(); ++p)
         CHECK((particles.F[static_cast<std::size_t>(p)] - expected[static_cast<std::size_t>(p)]).norm() < 1e-13);
 }

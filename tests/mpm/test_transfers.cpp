@@ -1,7 +1,8 @@
 // Particle-grid transfers of MPM (issue 33): APIC reproduces affine velocity
 // fields exactly, P2G conserves mass and linear momentum, APIC conserves
 // angular momentum both ways, PIC/FLIP blends as documented, and a particle
-// outside the grid's domain is an input error.
+// outside the grid's domain is an input error; the grid's layout finds
+// every stencil node at its slot.
 #include "mpm/particle_clouds.hpp"
 
 #include "sinew/core/input_error.hpp"
@@ -10,6 +11,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <limits>
 
 using namespace sinew;
@@ -36,14 +38,14 @@ void check_affine_reproduction(SplineOrder order)
     TransferSettings settings;
     settings.order = order;
     SparseGrid<Dim> grid(0.05);
-    particles_to_grid(particles, settings, grid);
+    const ParticleBuckets<Dim> layout = particles_to_grid(particles, settings, grid);
     for (int slot = 0; slot < grid.slots(); ++slot)
         if (grid.mass[static_cast<std::size_t>(slot)] > 0.0)
             CHECK((grid.velocity[static_cast<std::size_t>(slot)] - (b + A * grid.position(slot))).norm() < 1e-13);
     const Particles<Dim> before = particles;
     for (int p = 0; p < particles.size(); ++p)
         particles.C[static_cast<std::size_t>(p)].setZero();
-    grid_to_particles(grid, settings, particles);
+    grid_to_particles(grid, layout, settings, particles);
     double worst_v = 0.0, worst_C = 0.0;
     for (int p = 0; p < particles.size(); ++p) {
         const auto i = static_cast<std::size_t>(p);
@@ -66,12 +68,12 @@ void check_conservation(SplineOrder order)
     const double mass = total_mass(particles);
     const auto momentum = linear_momentum(particles);
     const AngularMomentum L = angular_momentum(particles, D);
-    particles_to_grid(particles, settings, grid);
+    const ParticleBuckets<Dim> layout = particles_to_grid(particles, settings, grid);
     const double scale = mass * 10.0;  // Σ m |v| is of this order
     CHECK(total_mass(grid) == Approx(mass).epsilon(1e-14));
     CHECK((linear_momentum(grid) - momentum).norm() < 1e-13 * scale);
     CHECK((angular_momentum(grid) - L).norm() < 1e-13 * scale);
-    grid_to_particles(grid, settings, particles);
+    grid_to_particles(grid, layout, settings, particles);
     CHECK((linear_momentum(particles) - momentum).norm() < 1e-13 * scale);
     CHECK((angular_momentum(particles, D) - L).norm() < 1e-13 * scale);
 }
@@ -100,16 +102,16 @@ TEST_CASE("transfers: PIC/FLIP takes the grid's velocity (PIC) or adds its incre
     TransferSettings settings;
     settings.scheme = TransferScheme::pic_flip;
     SparseGrid<2> grid(0.1);
-    particles_to_grid(particles, settings, grid);
+    const ParticleBuckets<2> layout = particles_to_grid(particles, settings, grid);
     const Eigen::Vector2d kick(0.25, -0.5);  // every node's velocity changes by the same amount
     for (auto& v : grid.velocity)
         v += kick;
     settings.flip_ratio = 1.0;
     Particles<2> flip = particles;
-    grid_to_particles(grid, settings, flip);
+    grid_to_particles(grid, layout, settings, flip);
     settings.flip_ratio = 0.0;
     Particles<2> pic = particles;
-    grid_to_particles(grid, settings, pic);
+    grid_to_particles(grid, layout, settings, pic);
     double pic_moved = 0.0;
     for (int p = 0; p < particles.size(); ++p) {
         const auto i = static_cast<std::size_t>(p);
@@ -130,4 +132,56 @@ TEST_CASE("transfers: a particle outside the grid's domain is an input error nam
                       Catch::Contains("particle 1") && Catch::Contains("outside the grid's domain"));
     particles.x[1] = Eigen::Vector3d(std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0);
     CHECK_THROWS_AS(particles_to_grid(particles, TransferSettings{}, grid), InputError);
+}
+
+namespace {
+
+template <int Dim>
+void check_layout(SplineOrder order)
+{
+    using Index = typename SparseGrid<Dim>::Index;
+    const Particles<Dim> particles = random_particles<Dim>(500, -0.33, 0.71, 0.0, 0.0, 9);
+    SparseGrid<Dim> grid(0.05);
+    const ParticleBuckets<Dim> layout = lay_out_grid(particles, order, grid);
+    std::vector<int> seen(static_cast<std::size_t>(particles.size()), 0);
+    int mismatches = 0;
+    for (const auto& bucket : layout.buckets) {
+        REQUIRE(bucket.first < bucket.last);
+        for (int j = bucket.first; j < bucket.last; ++j) {
+            const int p = layout.order[static_cast<std::size_t>(j)];
+            if (j > bucket.first)
+                CHECK(layout.order[static_cast<std::size_t>(j) - 1] < p);  // increasing within a bucket
+            ++seen[static_cast<std::size_t>(p)];
+            const auto& x = particles.x[static_cast<std::size_t>(p)];
+            const BSplineStencil<Dim> stencil = bspline_stencil<Dim>(x, grid.dx(), order);
+            CHECK(SparseGrid<Dim>::block_of(stencil.base) == bucket.block);
+            const StencilTables<Dim> tables(bucket, x, grid.dx(), order);
+            stencil.for_each_offset([&](const Index& offset) {
+                const int slot = Dim == 2 ? tables.slot(bucket, offset[0], offset[1])
+                                          : tables.slot(bucket, offset[0], offset[1], offset[Dim - 1]);
+                if (slot != grid.find(stencil.base + offset))
+                    ++mismatches;
+            });
+        }
+    }
+    CHECK(mismatches == 0);
+    CHECK(std::count(seen.begin(), seen.end(), 1) == particles.size());  // every particle in one bucket
+    std::size_t coloured = 0;
+    for (int colour = 0; colour < ParticleBuckets<Dim>::kCorners; ++colour)
+        for (const int b : layout.colours[static_cast<std::size_t>(colour)]) {
+            ++coloured;
+            for (int a = 0; a < Dim; ++a)
+                CHECK(((layout.buckets[static_cast<std::size_t>(b)].block[a] & 1) << a) == (colour & (1 << a)));
+        }
+    CHECK(coloured == layout.buckets.size());
+}
+
+} // namespace
+
+TEST_CASE("transfers: the grid's layout finds every stencil node of every particle at its slot")
+{
+    check_layout<2>(SplineOrder::quadratic);
+    check_layout<2>(SplineOrder::cubic);
+    check_layout<3>(SplineOrder::quadratic);
+    check_layout<3>(SplineOrder::cubic);
 }
