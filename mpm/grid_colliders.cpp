@@ -11,7 +11,7 @@ void add_collider_contacts(const std::vector<GridCollider<Dim>>& colliders, cons
     for (const GridCollider<Dim>& collider : colliders) {
         const BodyDistance d = collider.body->distance(point);
         if (d.distance < collider.thickness * dx)
-            contacts.push_back({collider.condition, collider.velocity, d.gradient.head<Dim>()});
+            contacts.push_back({collider.condition, collider.velocity_at(x), d.gradient.head<Dim>()});
     }
 }
 

@@ -2,6 +2,7 @@
 
 #include "sinew/core/format_number.hpp"
 #include "sinew/core/input_error.hpp"
+#include "sinew/core/rotation_vector.hpp"
 #include "sinew/mesh/pvd_writer.hpp"
 #include "sinew/mesh/vtp_writer.hpp"
 #include "sinew/mpm/cfl.hpp"
@@ -228,17 +229,22 @@ private:
     double step_length() const { return scene_.duration / static_cast<double>(step_count(scene_, setup_.step.time_step)); }
 
     /// The scene's step settings with Δt = T/N and the run's own colliders,
-    /// each placed where its velocity has carried it by `time`.
+    /// each placed where its motion has carried it by `time`: a point x₀ of
+    /// the body at x = Q (x₀ − c₀) + c₀ + v t, Q = exp(t [ω]×), its centre at c₀ + v t.
     MpmStepSettings<Dim> step_settings(double time = 0.0) const
     {
         MpmStepSettings<Dim> step = setup_.step;
         step.time_step = step_length();
         for (std::size_t k = 0; k < moving_.size(); ++k) {
-            const PlacedBody& start = *setup_.step.colliders[k].body;
-            Eigen::Vector3d travel = Eigen::Vector3d::Zero();
-            travel.head<Dim>() = time * step.colliders[k].velocity;  // t₀ + v t
-            moving_[k]->set_placement(start.rotation(), start.translation() + travel);
+            const GridCollider<Dim>& scene_collider = setup_.step.colliders[k];
+            const PlacedBody& start = *scene_collider.body;
+            const Eigen::Matrix3d Q = rotation_matrix(time * scene_collider.angular_velocity);
+            Eigen::Vector3d center = Eigen::Vector3d::Zero(), travel = Eigen::Vector3d::Zero();
+            center.head<Dim>() = scene_collider.center;
+            travel.head<Dim>() = time * scene_collider.velocity;
+            moving_[k]->set_placement(Q * start.rotation(), Q * (start.translation() - center) + center + travel);
             step.colliders[k].body = moving_[k];
+            step.colliders[k].center = scene_collider.center + time * scene_collider.velocity;
         }
         return step;
     }

@@ -69,6 +69,25 @@ TEST_CASE("grid colliders: nodes inside a moving ball take its condition relativ
     CHECK(after_collider(collider, Eigen::Vector3i::Zero(), v) == collider.velocity);
 }
 
+TEST_CASE("grid colliders: a turning collider holds a node at the velocity of its point there, v + omega x (x - c)")
+{
+    GridCollider<3> collider;
+    collider.body = ball(Eigen::Vector3d(0.5, 0.0, 0.0), 2.0);
+    collider.velocity = Eigen::Vector3d(0.1, -0.2, 0.3);
+    collider.angular_velocity = Eigen::Vector3d(0.5, -1.0, 2.0);
+    collider.center = Eigen::Vector3d(0.2, 0.1, -0.3);
+    collider.condition = GridCondition::sticky;
+    const Eigen::Vector3i node(3, -4, 7);  // x = (0.3, −0.4, 0.7), inside the ball
+    const Eigen::Vector3d x = 0.1 * node.cast<double>();
+    const Eigen::Vector3d expected = collider.velocity + collider.angular_velocity.cross(x - collider.center);
+    CHECK((after_collider(collider, node, Eigen::Vector3d(5.0, 5.0, 5.0)) - expected).norm() < 1e-15);
+    CHECK((collider.velocity_at(collider.center) - collider.velocity).norm() == 0.0);
+    GridCollider<2> flat;  // 2D: ω about z
+    flat.angular_velocity = Eigen::Vector3d(0.0, 0.0, 3.0);
+    flat.center = Eigen::Vector2d(1.0, 1.0);
+    CHECK((flat.velocity_at(Eigen::Vector2d(2.0, 1.0)) - Eigen::Vector2d(0.0, 3.0)).norm() < 1e-15);
+}
+
 TEST_CASE("grid colliders: a block dropped on a ball does not pass into it")
 {
     const auto model = make_model<3, 3>("fixed-corotated", ParameterValues{{"mu", 1e4}, {"lambda", 2e4}});

@@ -16,6 +16,7 @@ namespace sinew {
 namespace {
 
 constexpr double kMaxSpeed = 1e8;  // m/s: anything beyond is a typo
+constexpr double kMaxTurnRate = 1e6;  // rad/s
 constexpr double kMaxSteps = 1e7;  // duration / time_step
 
 SceneKey ranged(SceneKey key, double lower, double upper)
@@ -79,6 +80,9 @@ public:
                 {"colliders[].name", "string", "", "the kind", "the collider's name in messages"},
                 {"colliders[].condition", "string", "sticky | slip | separate", "separate", "what it does to a node it holds"},
                 ranged({"colliders[].velocity", "vector", "[-1e8, 1e8]", "0", "the collider's velocity (m/s): it moves at it from where the scene places it"}, -kMaxSpeed, kMaxSpeed),
+                ranged({"colliders[].angular_velocity", "vector", "[-1e6, 1e6]", "0",
+                        "ω (rad/s; 2D: [ω] about z): the collider turns at it about its center"}, -kMaxTurnRate, kMaxTurnRate),
+                {"colliders[].center", "vector", "", "", "the point the collider turns about at t = 0 (m), moving at its velocity; needed with angular_velocity"},
                 ranged({"colliders[].thickness", "number", "[0, 100]", "1", "cells of dx outside the body whose nodes it holds"}, 0.0, 100.0),
                 {"stepping", "string", "explicit | implicit", "explicit", "symplectic Euler, or the grid-velocity NLP solved every step (solver: the scene's)"},
                 ranged({"time_step", "number", "(0, inf)", "", "Δt (s)", true}, 0.0, HUGE_VAL),
@@ -314,6 +318,20 @@ private:
         return walls;
     }
 
+    /// ω ([ω_z] in 2D, a 3-vector in 3D, as dynamics.initial_velocity.angular) and the centre it needs.
+    template <int Dim>
+    static void read_turning(const JsonCursor& o, const DeclaredKeys& declared, GridCollider<Dim>& collider)
+    {
+        const SceneKey& key = declared.at("colliders[].angular_velocity");
+        const auto omega = o.find("angular_velocity");
+        if (omega)
+            collider.angular_velocity.template tail<Dim == 2 ? 1 : 3>() = omega->vector_in(Dim == 2 ? 1 : 3, key.lower, key.upper);
+        if (auto c = o.find("center"))
+            collider.center = c->vector_in(Dim, -HUGE_VAL, HUGE_VAL);
+        else if (omega)
+            omega->fail("needs the collider's center, the point it turns about");
+    }
+
     template <int Dim>
     static std::vector<GridCollider<Dim>> read_colliders(const JsonCursor& list, const DeclaredKeys& declared,
                                                         const std::string& base_folder)
@@ -331,6 +349,7 @@ private:
                 collider.velocity = vector_of<Dim>(*v, declared.at("colliders[].velocity"));
             if (auto v = o.find("thickness"))
                 collider.thickness = declared.number(*v, "colliders[].thickness");
+            read_turning(o, declared, collider);
             colliders.push_back(collider);
         }
         return colliders;
