@@ -30,20 +30,22 @@ NodeVelocityFrame<Dim> node_velocity_frame(const std::vector<NodeContact<Dim>>& 
     }
     if (rows.empty())
         return frame;
-    Eigen::Matrix<double, Dim, Eigen::Dynamic> N_transpose(Dim, static_cast<Eigen::Index>(rows.size()));
+    // Dynamic sizes throughout: one QR type for both solves and both dimensions (compile time).
+    Eigen::MatrixXd N_transpose(Dim, static_cast<Eigen::Index>(rows.size()));
     Eigen::VectorXd d(static_cast<Eigen::Index>(rows.size()));
     for (std::size_t k = 0; k < rows.size(); ++k) {
         N_transpose.col(static_cast<Eigen::Index>(k)) = rows[k];
         d[static_cast<Eigen::Index>(k)] = values[k];
     }
-    const Eigen::ColPivHouseholderQR<Eigen::Matrix<double, Dim, Eigen::Dynamic>> qr(N_transpose);
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(N_transpose);
     const Eigen::Index rank = qr.rank();
-    const Eigen::Matrix<double, Dim, Dim> Q = qr.householderQ();
+    const Eigen::MatrixXd Q = qr.householderQ();
     frame.basis = Q.rightCols(Dim - rank);  // null space of N
     // Least-norm v with N v = d: v = Q₁ z, z minimizing ‖N Q₁ z − d‖ over the range Q₁ of Nᵀ.
-    const Eigen::Matrix<double, Dim, Eigen::Dynamic> range = Q.leftCols(rank);
+    const Eigen::MatrixXd range = Q.leftCols(rank);
     const Eigen::MatrixXd reduced = N_transpose.transpose() * range;
-    frame.offset = range * reduced.colPivHouseholderQr().solve(d);
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> reduced_qr(reduced);
+    frame.offset = range * reduced_qr.solve(d);
     return frame;
 }
 
