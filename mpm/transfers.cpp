@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <type_traits>
 
 namespace sinew {
 
@@ -39,16 +40,34 @@ using MassMomentum = Eigen::Matrix<double, Dim + 1, 1>;
 template <int Dim>
 using PackedVelocity = Eigen::Matrix<double, Dim == 3 ? 4 : Dim, 1>;
 
+/// The weights and distances of a stencil's tables as local arrays of a
+/// width known when compiling: the loops unroll, and the stores into the
+/// grid cannot be taken to change them (no reloads).
+template <int Dim, int Width>
+struct LocalTables {
+    double N[Dim][Width], d[Dim][Width];
+
+    explicit LocalTables(const StencilTables<Dim>& t)
+    {
+        for (int a = 0; a < Dim; ++a)
+            for (int k = 0; k < Width; ++k) {
+                N[a][k] = t.N[a][k];
+                d[a][k] = t.d[a][k];
+            }
+    }
+};
+
 /// Adds one particle to its stencil's nodes, q_i += w (m, m v_p + A d) with
 /// A = m C_p + S_p and d = x_i − x_p summed axis by axis; with `plain`
 /// (PIC/FLIP) also w m v_p into velocity_transferred, a momentum until
 /// particles_to_grid divides it.
-template <int Dim, bool plain>
+template <int Dim, bool plain, int Width>
 void scatter(const typename ParticleBuckets<Dim>::Bucket& bucket, const StencilTables<Dim>& t, double m,
              const Eigen::Matrix<double, Dim, 1>& mv, const Eigen::Matrix<double, Dim, Dim>& A,
              MassMomentum<Dim>* q, SparseGrid<Dim>& grid)
 {
     using Packed = MassMomentum<Dim>;
+    const LocalTables<Dim, Width> local(t);
     Packed start, column[Dim];  // (m, m v_p) and (0, A e_c)
     start << m, mv;
     for (int c = 0; c < Dim; ++c)
@@ -59,16 +78,16 @@ void scatter(const typename ParticleBuckets<Dim>::Bucket& bucket, const StencilT
         if constexpr (plain)
             grid.velocity_transferred[s] += w * mv;
     };
-    for (int i = 0; i < t.width; ++i) {
-        const Packed along_0 = start + column[0] * t.d[0][i];
-        for (int j = 0; j < t.width; ++j) {
-            const double wij = t.N[0][i] * t.N[1][j];
-            const Packed along_1 = along_0 + column[1] * t.d[1][j];
+    for (int i = 0; i < Width; ++i) {
+        const Packed along_0 = start + column[0] * local.d[0][i];
+        for (int j = 0; j < Width; ++j) {
+            const double wij = local.N[0][i] * local.N[1][j];
+            const Packed along_1 = along_0 + column[1] * local.d[1][j];
             if constexpr (Dim == 2) {
                 add(t.slot(bucket, i, j), wij, along_1);
             } else {
-                for (int k = 0; k < t.width; ++k)
-                    add(t.slot(bucket, i, j, k), wij * t.N[2][k], along_1 + column[2] * t.d[2][k]);
+                for (int k = 0; k < Width; ++k)
+                    add(t.slot(bucket, i, j, k), wij * local.N[2][k], along_1 + column[2] * local.d[2][k]);
             }
         }
     }
@@ -83,44 +102,57 @@ struct Gathered {
     Eigen::Matrix<double, Dim, Dim> B = Eigen::Matrix<double, Dim, Dim>::Zero();
 };
 
-template <int Dim>
-Gathered<Dim> gather(const typename ParticleBuckets<Dim>::Bucket& bucket, const StencilTables<Dim>& t, bool flip,
-                     const std::vector<PackedVelocity<Dim>>& velocity, const SparseGrid<Dim>& grid)
+template <int Dim, bool flip, int Width>
+Gathered<Dim> gather(const typename ParticleBuckets<Dim>::Bucket& bucket, const StencilTables<Dim>& t,
+                     const PackedVelocity<Dim>* velocity, const SparseGrid<Dim>& grid)
 {
     using Packed = PackedVelocity<Dim>;
+    const LocalTables<Dim, Width> local(t);
     Packed sum = Packed::Zero(), moment[Dim];  // Σ w v, and Σ w v d_c by axis c
     for (int c = 0; c < Dim; ++c)
         moment[c].setZero();
     Gathered<Dim> out;
-    for (int i = 0; i < t.width; ++i) {
+    for (int i = 0; i < Width; ++i) {
         Packed sum_0 = Packed::Zero();
-        for (int j = 0; j < t.width; ++j) {
-            const double wij = t.N[0][i] * t.N[1][j];
+        for (int j = 0; j < Width; ++j) {
+            const double wij = local.N[0][i] * local.N[1][j];
             Packed sum_1 = Packed::Zero();
             auto add = [&](int slot, double w) {
                 const auto s = static_cast<std::size_t>(slot);
                 const Packed wv = w * velocity[s];
                 sum_1 += wv;
-                if (flip)
+                if constexpr (flip)
                     out.increment += wv.template head<Dim>() - w * grid.velocity_transferred[s];
                 return wv;
             };
             if constexpr (Dim == 2) {
                 add(t.slot(bucket, i, j), wij);
             } else {
-                for (int k = 0; k < t.width; ++k)
-                    moment[2] += t.d[2][k] * add(t.slot(bucket, i, j, k), wij * t.N[2][k]);
+                for (int k = 0; k < Width; ++k)
+                    moment[2] += local.d[2][k] * add(t.slot(bucket, i, j, k), wij * local.N[2][k]);
             }
-            moment[1] += t.d[1][j] * sum_1;
+            moment[1] += local.d[1][j] * sum_1;
             sum_0 += sum_1;
         }
-        moment[0] += t.d[0][i] * sum_0;
+        moment[0] += local.d[0][i] * sum_0;
         sum += sum_0;
     }
     out.velocity = sum.template head<Dim>();
     for (int c = 0; c < Dim; ++c)
         out.B.col(c) = moment[c].template head<Dim>();
     return out;
+}
+
+/// scatter or gather with the flag and the stencil width as template
+/// arguments: call(std::integral_constant<bool, flag>, std::integral_constant<int, width>).
+template <typename Call>
+auto with_constants(bool flag, int width, const Call& call)
+{
+    using Three = std::integral_constant<int, 3>;
+    using Four = std::integral_constant<int, 4>;
+    if (flag)
+        return width == 3 ? call(std::true_type{}, Three{}) : call(std::true_type{}, Four{});
+    return width == 3 ? call(std::false_type{}, Three{}) : call(std::false_type{}, Four{});
 }
 
 } // namespace
@@ -145,10 +177,10 @@ ParticleBuckets<Dim> particles_to_grid(const Particles<Dim>& particles, const Tr
             if (impulses)
                 A += (*impulses)[i];
             const StencilTables<Dim> tables(bucket, particles.x[i], dx, settings.order);
-            if (flip)
-                scatter<Dim, true>(bucket, tables, m, Vector(m * particles.v[i]), A, q.data(), grid);
-            else
-                scatter<Dim, false>(bucket, tables, m, Vector(m * particles.v[i]), A, q.data(), grid);
+            const Vector mv = m * particles.v[i];
+            with_constants(flip, tables.width, [&](auto plain, auto width) {
+                scatter<Dim, decltype(plain)::value, decltype(width)::value>(bucket, tables, m, mv, A, q.data(), grid);
+            });
         }
     });
     const int slots = grid.slots();
@@ -185,8 +217,10 @@ void grid_to_particles(const SparseGrid<Dim>& grid, const ParticleBuckets<Dim>& 
     for_each_bucket(layout, [&](const Bucket& bucket) {
         for (int j = bucket.first; j < bucket.last; ++j) {
             const auto i = static_cast<std::size_t>(layout.order[static_cast<std::size_t>(j)]);
-            const Gathered<Dim> sums =
-                gather(bucket, StencilTables<Dim>(bucket, particles.x[i], dx, settings.order), flip, velocity, grid);
+            const StencilTables<Dim> tables(bucket, particles.x[i], dx, settings.order);
+            const Gathered<Dim> sums = with_constants(flip, tables.width, [&](auto with_flip, auto width) {
+                return gather<Dim, decltype(with_flip)::value, decltype(width)::value>(bucket, tables, velocity.data(), grid);
+            });
             particles.C[i] = sums.B * inverse_D;
             particles.v[i] = flip ? Vector((1.0 - settings.flip_ratio) * sums.velocity +
                                            settings.flip_ratio * (particles.v[i] + sums.increment))
