@@ -48,6 +48,7 @@ struct MpmScene {
     /// below it; without, the run refuses it (before it starts, or by ending).
     bool substeps = false;
     int frames = 50;  ///< output frames after t = 0, equally spaced in time
+    bool grid_output = false;  ///< also the active grid as grid_k.vtu at every frame
 };
 
 } // namespace sinew

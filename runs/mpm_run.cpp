@@ -3,8 +3,10 @@
 #include "sinew/core/format_number.hpp"
 #include "sinew/core/input_error.hpp"
 #include "sinew/core/rotation_vector.hpp"
+#include "sinew/mesh/cell_vtu_writer.hpp"
 #include "sinew/mesh/pvd_writer.hpp"
 #include "sinew/mesh/vtp_writer.hpp"
+#include "sinew/mpm/active_grid.hpp"
 #include "sinew/mpm/cfl.hpp"
 #include "sinew/mpm/explicit_step.hpp"
 #include "sinew/mpm/grid_velocity_nlp.hpp"
@@ -54,6 +56,20 @@ MpmFrameRow measure(const MpmSetup<Dim>& setup, const Particles<Dim>& particles,
 }
 
 /// The particles' point data: velocity, det F, ‖P‖, material, current fiber F a₀, damage.
+/// The active grid's node data: mass and velocity.
+template <int Dim>
+VtuArrays grid_arrays(const SparseGrid<Dim>& grid, const ActiveGrid<Dim>& active)
+{
+    const auto count = static_cast<Eigen::Index>(active.slots.size());
+    Eigen::MatrixXd mass(1, count), velocity(Dim, count);
+    for (Eigen::Index k = 0; k < count; ++k) {
+        const auto s = static_cast<std::size_t>(active.slots[static_cast<std::size_t>(k)]);
+        mass(0, k) = grid.mass[s];
+        velocity.col(k) = grid.velocity[s];
+    }
+    return {{"mass", mass}, {"velocity", velocity}};
+}
+
 template <int Dim>
 VtuArrays particle_arrays(const MpmSetup<Dim>& setup, const Particles<Dim>& particles)
 {
@@ -294,9 +310,22 @@ private:
             const std::string name = "frame_" + std::to_string(frame) + ".vtp";
             write_vtp(folder_ + name, positions_of(particles_.x), particle_arrays(setup_, particles_), settings_.encoding);
             collection_.push_back({row.time, name});
+            if (scene_.grid_output)
+                write_grid(frame, row.time);
         }
         if (on_frame)
             on_frame(row);
+    }
+
+    /// grid_k.vtu: the grid of the frame's last step (at t = 0, the particles' P2G).
+    void write_grid(int frame, double time)
+    {
+        if (frame == 0)
+            particles_to_grid(particles_, setup_.step.transfer, grid_);
+        const ActiveGrid<Dim> active = active_grid(grid_);
+        const std::string name = "grid_" + std::to_string(frame) + ".vtu";
+        write_cell_vtu<Dim>(folder_ + name, active.positions, active.cells, grid_arrays(grid_, active), settings_.encoding);
+        grid_collection_.push_back({time, name});
     }
 
     void write_result(const MpmRunOutcome& outcome) const
@@ -310,6 +339,11 @@ private:
             files.push_back(entry.file);
         if (!collection_.empty())
             write_pvd(folder_ + "result.pvd", collection_);
+        nlohmann::json grid_files = nlohmann::json::array();
+        for (const PvdEntry& entry : grid_collection_)
+            grid_files.push_back(entry.file);
+        if (!grid_collection_.empty())
+            write_pvd(folder_ + "grid.pvd", grid_collection_);
         const nlohmann::json result = {
             {"scene", "mpm"},
             {"dimension", Dim},
@@ -329,6 +363,7 @@ private:
             {"iterations", outcome.run.iterations},
             {"time_s", outcome.run.time_s},
             {"vtp", files},
+            {"grid_vtu", grid_files},
             {"frames", frames}};
         write_text_file(folder_ + "result.json", result.dump(2) + "\n");
     }
@@ -344,6 +379,7 @@ private:
     int iterations_recorded_ = 0;
     std::string folder_;
     std::vector<PvdEntry> collection_;
+    std::vector<PvdEntry> grid_collection_;  ///< grid_k.vtu, with grid_output
     /// The colliders as this run places them (the scene's stay where they start).
     std::vector<std::shared_ptr<PlacedBody>> moving_;
 };

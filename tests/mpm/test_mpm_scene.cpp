@@ -145,6 +145,22 @@ TEST_CASE("mpm scenes: a run writes a VTP per frame, result.pvd and result.json,
     }
 }
 
+TEST_CASE("mpm scenes: grid_output writes the active grid at every frame beside the particles")
+{
+    ScratchDirectory dir;
+    SceneRunSettings settings;
+    settings.folder = dir.path("out");
+    const Scene scene = parse_scene(falling_disk(", \"grid_output\": true"), "scene.json");
+    REQUIRE(run_mpm(*scene.mpm, settings).converged);
+    for (int k = 0; k <= 4; ++k)
+        CHECK(std::filesystem::exists(settings.folder + "/grid_" + std::to_string(k) + ".vtu"));
+    CHECK(std::filesystem::exists(settings.folder + "/grid.pvd"));
+    std::ifstream in(settings.folder + "/result.json");
+    const nlohmann::json result = nlohmann::json::parse(in);
+    CHECK(result["grid_vtu"].size() == 5);
+    CHECK(result["vtp"].size() == 5);
+}
+
 TEST_CASE("mpm scenes: Sulsky's colliding disks keep their energy through the impact, do not interpenetrate and separate")
 {
     const Scene scene = parse_scene(scene_text("colliding-disks.json"), "colliding-disks.json");

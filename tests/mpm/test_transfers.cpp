@@ -6,6 +6,7 @@
 #include "mpm/particle_clouds.hpp"
 
 #include "sinew/core/input_error.hpp"
+#include "sinew/mpm/active_grid.hpp"
 #include "sinew/mpm/particle_measures.hpp"
 #include "sinew/mpm/transfers.hpp"
 
@@ -184,4 +185,30 @@ TEST_CASE("transfers: the grid's layout finds every stencil node of every partic
     check_layout<2>(SplineOrder::cubic);
     check_layout<3>(SplineOrder::quadratic);
     check_layout<3>(SplineOrder::cubic);
+}
+
+TEST_CASE("active grid: every node with mass, and the cells with mass at every corner, in VTK's corner order")
+{
+    const Particles<3> particles = random_particles<3>(300, 0.1, 0.6, 0.0, 0.0, 4);
+    SparseGrid<3> grid(0.05);
+    particles_to_grid(particles, TransferSettings{}, grid);
+    const ActiveGrid<3> active = active_grid(grid);
+    double mass = 0.0;
+    int with_mass = 0;
+    for (int slot = 0; slot < grid.slots(); ++slot)
+        with_mass += grid.mass[static_cast<std::size_t>(slot)] > 0.0 ? 1 : 0;
+    for (const int slot : active.slots)
+        mass += grid.mass[static_cast<std::size_t>(slot)];
+    CHECK(static_cast<int>(active.slots.size()) == with_mass);
+    CHECK(mass == Approx(total_mass(particles)).epsilon(1e-14));
+    REQUIRE(!active.cells.empty());
+    int misplaced = 0;
+    for (const auto& cell : active.cells)
+        for (int corner = 0; corner < 8; ++corner) {
+            const Eigen::Vector3d offset(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
+            const Eigen::Vector3d step = active.positions.col(cell[static_cast<std::size_t>(corner)]) -
+                                         active.positions.col(cell[0]);
+            misplaced += (step - grid.dx() * offset).norm() < 1e-12 ? 0 : 1;
+        }
+    CHECK(misplaced == 0);
 }

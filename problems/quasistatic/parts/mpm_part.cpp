@@ -89,7 +89,8 @@ public:
                 ranged({"duration", "number", "(0, inf), at most 1e7 steps", "", "T (s)", true}, 0.0, HUGE_VAL),
                 ranged({"cfl", "number", "(0, 1]", "0.5", "explicit: Δt ≤ cfl · dx / max(c + |v|)"}, 0.0, 1.0),
                 {"substeps", "boolean", "", "false", "explicit: split a step above the CFL bound into sub-steps instead of refusing it"},
-                ranged({"frames", "integer", "[1, 100000]", "50", "output frames after t = 0, equally spaced"}, 1, 100000)};
+                ranged({"frames", "integer", "[1, 100000]", "50", "output frames after t = 0, equally spaced"}, 1, 100000),
+                {"grid_output", "boolean", "", "false", "also write the active grid (nodes with mass, cells with mass at every corner) as grid_k.vtu with grid.pvd"}};
     }
 
     void read(const JsonCursor& m, SceneAssembly& assembly) const override
@@ -134,6 +135,8 @@ private:
             scene.substeps = v->boolean();
         if (auto v = m.find("frames"))
             scene.frames = declared.integer(*v, "frames");
+        if (auto v = m.find("grid_output"))
+            scene.grid_output = v->boolean();
     }
 
     template <int Dim>
