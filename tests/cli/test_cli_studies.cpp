@@ -1,5 +1,7 @@
-// Command-line runs that solve many problems or fit a rig many times: label
-// heavy (tests/CMakeLists.txt), run by the Release suite, not the sanitized one.
+// Command-line runs that solve many problems or fit a rig many times, and
+// the derivative checks of the built-in scenes (seconds each in Release,
+// minutes under the sanitizers): label heavy (tests/CMakeLists.txt), run by
+// the Release suite, not the sanitized one.
 #include "compare_test_support.hpp"
 #include "run_sinew.hpp"
 
@@ -42,6 +44,33 @@ TEST_CASE("sinew compare face-rig fits the face rig by the constrained solvers a
     }
     CHECK(run.err.find("|Mc^T Mc - I| =") != std::string::npos);
     check_history_plot(folder, "violation", runs, "constraint_violation");
+}
+
+TEST_CASE("sinew check passes on every built-in scene but the slowest")
+{
+    // Kinks at the rest state (the muscle's fiber curves at λ = 1, nodes on
+    // the draped sheet's sphere) and round-off near zero gradients are told
+    // from wrong derivatives (docs/solvers.md, "Derivative checks").
+    int checked = 0;
+    for (const sinew::BuiltinProblem& problem : sinew::builtin_problems()) {
+        if (problem.scene.empty() || kSlowestChecks.count(problem.name) > 0)
+            continue;
+        const Run run = run_sinew("check " + problem.name);
+        CAPTURE(problem.name, run.out, run.err);
+        CHECK(run.exit_code == 0);
+        ++checked;
+    }
+    CHECK(checked >= 15);
+}
+
+TEST_CASE("sinew check runs the Taylor test on cantilever-206k and says why it skips the dense check")
+{
+    const Run run = run_sinew("check cantilever-206k");
+    CAPTURE(run.out, run.err);
+    CHECK(run.exit_code == 0);
+    CHECK(run.out.find("gradient      2.0") != std::string::npos);
+    CHECK(run.out.find("hessian       2.0") != std::string::npos);
+    CHECK(run.out.find("entrywise check skipped") != std::string::npos);
 }
 
 TEST_CASE("sinew check passes on the built-in scenes whose check is slowest")
