@@ -23,12 +23,12 @@ namespace {
 template <int Dim>
 std::string stress_impulses(const Particles<Dim>& particles, const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
                             const MpmStepSettings<Dim>& settings, double dx,
-                            std::vector<typename Particles<Dim>::Matrix>& impulse)
+                            std::vector<typename Particles<Dim>::Matrix>& impulse, std::vector<double>& psi)
 {
     constexpr int kRun = 64;  // particles a call
     const int count = particles.size();
     impulse.resize(static_cast<std::size_t>(count));
-    std::vector<double> psi(static_cast<std::size_t>(count));
+    psi.resize(static_cast<std::size_t>(count));
     const double inverse_D = 1.0 / (apic_inertia_factor(settings.transfer.order) * dx * dx);
     const int runs = (count + kRun - 1) / kRun;
 #pragma omp parallel for schedule(dynamic, 4)
@@ -49,14 +49,17 @@ std::string stress_impulses(const Particles<Dim>& particles, const std::vector<c
             impulse[i] = (-settings.time_step * particles.volume[i] * inverse_D) * impulse[i] * particles.F[i].transpose();
         }
     }
+    int first_failed = count;
+#pragma omp parallel for schedule(static) reduction(min : first_failed)
     for (int p = 0; p < count; ++p)
-        if (!std::isfinite(psi[static_cast<std::size_t>(p)]) || !impulse[static_cast<std::size_t>(p)].allFinite()) {
-            std::ostringstream failure;
-            failure << "particle " << p << ": the stress is not finite at det F = "
-                    << particles.F[static_cast<std::size_t>(p)].determinant();
-            return failure.str();
-        }
-    return {};
+        if (!std::isfinite(psi[static_cast<std::size_t>(p)]) || !impulse[static_cast<std::size_t>(p)].allFinite())
+            first_failed = std::min(first_failed, p);
+    if (first_failed == count)
+        return {};
+    std::ostringstream failure;
+    failure << "particle " << first_failed << ": the stress is not finite at det F = "
+            << particles.F[static_cast<std::size_t>(first_failed)].determinant();
+    return failure.str();
 }
 
 /// v_i ← v_i + Δt g where m_i > 0.
@@ -92,8 +95,8 @@ ExplicitStepReport explicit_step(Particles<Dim>& particles, const std::vector<co
         clock = now;
         return seconds;
     };
-    std::vector<typename Particles<Dim>::Matrix> impulses;
-    report.failure = stress_impulses(particles, models, settings, grid.dx(), impulses);
+    std::vector<typename Particles<Dim>::Matrix>& impulses = grid.buffers.impulse;
+    report.failure = stress_impulses(particles, models, settings, grid.dx(), impulses, grid.buffers.energy);
     report.stress_s = lap();
     if (!report.failure.empty())
         return report;

@@ -2,6 +2,8 @@
 
 #include "sinew/mpm/transfers.hpp"
 
+#include <algorithm>
+
 namespace sinew {
 namespace {
 
@@ -26,6 +28,19 @@ ParticleBuckets<Dim> lay_out_grid(const Particles<Dim>& particles, SplineOrder o
     constexpr int kWidth = SparseGrid<Dim>::kBlockWidth;
     grid.clear();
     const int count = particles.size();
+    // Each particle's stencil base, in parallel; the lowest particle the grid cannot hold, if any.
+    std::vector<Index> base(static_cast<std::size_t>(count));
+    int first_outside = count;
+#pragma omp parallel for schedule(static) reduction(min : first_outside)
+    for (int p = 0; p < count; ++p) {
+        const auto& x = particles.x[static_cast<std::size_t>(p)];
+        if (in_grid<Dim>(x, grid.dx()))
+            base[static_cast<std::size_t>(p)] = stencil_base<Dim>(x, grid.dx(), order);
+        else
+            first_outside = std::min(first_outside, p);
+    }
+    if (first_outside < count)
+        check_in_grid(particles, first_outside, grid.dx());
     // Each particle's base block, numbered by the grid as first reached: the
     // bases' blocks come first, so a base block's number is its bucket's.
     std::vector<int> bucket_of(static_cast<std::size_t>(count));
@@ -33,9 +48,8 @@ ParticleBuckets<Dim> lay_out_grid(const Particles<Dim>& particles, SplineOrder o
     Index previous_block = Index::Zero();
     int previous = -1;
     for (int p = 0; p < count; ++p) {
-        check_in_grid(particles, p, grid.dx());
-        const Index base = stencil_base<Dim>(particles.x[static_cast<std::size_t>(p)], grid.dx(), order);
-        const Index block = SparseGrid<Dim>::block_of(base);
+        const Index& node = base[static_cast<std::size_t>(p)];
+        const Index block = SparseGrid<Dim>::block_of(node);
         if (previous < 0 || block != previous_block) {
             previous = grid.touch(block * kWidth) / SparseGrid<Dim>::kBlockNodes;
             previous_block = block;
@@ -44,7 +58,7 @@ ParticleBuckets<Dim> lay_out_grid(const Particles<Dim>& particles, SplineOrder o
         }
         bucket_of[static_cast<std::size_t>(p)] = previous;
         Index& top = highest[static_cast<std::size_t>(previous)];
-        top = top.cwiseMax(base - block * kWidth);
+        top = top.cwiseMax(node - block * kWidth);
     }
     ParticleBuckets<Dim> out;
     const int reach = stencil_width(order) - 1;

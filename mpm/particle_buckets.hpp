@@ -44,8 +44,10 @@ struct ParticleBuckets {
 template <int Dim>
 struct StencilTables {
     int width = 3;
-    std::array<std::array<double, BSplineStencil<Dim>::kMaxWidth>, Dim> N{}, d{};
-    std::array<std::array<int, BSplineStencil<Dim>::kMaxWidth>, Dim> corner{}, place{};
+    // Not value-initialized: the constructor fills the first `width` entries
+    // of every axis, the only ones read (zeroing them cost the transfers 7 %).
+    std::array<std::array<double, BSplineStencil<Dim>::kMaxWidth>, Dim> N, d;
+    std::array<std::array<int, BSplineStencil<Dim>::kMaxWidth>, Dim> corner, place;
 
     /// The tables of the particle at x, in `bucket`, on a grid of spacing dx.
     StencilTables(const typename ParticleBuckets<Dim>::Bucket& bucket, const Eigen::Matrix<double, Dim, 1>& x, double dx,

@@ -54,6 +54,18 @@ public:
     std::vector<Vector> velocity;   ///< v_i after the grid update
     std::vector<Vector> velocity_transferred;  ///< v_i as the particles gave it (FLIP's increment)
 
+    /// Arrays a step fills afresh and reads in the same step, kept with the
+    /// grid so that a step allocates nothing (and the system zeroes no new
+    /// pages) once the particles and the grid stop growing. Nothing in them
+    /// is read across steps; transfers of a const grid may fill them.
+    struct StepBuffers {
+        std::vector<Eigen::Matrix<double, Dim + 1, 1>> mass_momentum;   ///< P2G's sums (m, m v) by slot
+        std::vector<Eigen::Matrix<double, Dim == 3 ? 4 : Dim, 1>> velocity;  ///< G2P's v_i by slot, padded to 4 doubles in 3D
+        std::vector<Eigen::Matrix<double, Dim, Dim>> impulse;         ///< the explicit step's S_p by particle
+        std::vector<double> energy;                                   ///< the explicit step's ψ_p by particle
+    };
+    mutable StepBuffers buffers;
+
 private:
     static std::uint64_t key(const Index& block);
 

@@ -24,16 +24,7 @@ template <int Dim>
 void advect_particles(const MpmStepSettings<Dim>& settings, const SparseGrid<Dim>& grid, const ParticleBuckets<Dim>& layout,
                       Particles<Dim>& particles)
 {
-    using Matrix = typename Particles<Dim>::Matrix;
-    grid_to_particles(grid, layout, settings.transfer, particles);
-    const double h = settings.time_step;
-    const int count = particles.size();
-#pragma omp parallel for schedule(static)
-    for (int p = 0; p < count; ++p) {
-        const auto i = static_cast<std::size_t>(p);
-        particles.x[i] += h * particles.v[i];
-        particles.F[i] = (Matrix::Identity() + h * particles.C[i]) * particles.F[i];  // Fⁿ⁺¹ = (I + Δt ∇v) Fⁿ
-    }
+    grid_to_particles_advected(grid, layout, settings.transfer, settings.time_step, particles);
 }
 
 template <int Dim>

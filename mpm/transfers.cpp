@@ -10,11 +10,18 @@
 namespace sinew {
 
 template <int Dim>
+bool in_grid(const Eigen::Matrix<double, Dim, 1>& x, double dx)
+{
+    const double reach = static_cast<double>(SparseGrid<Dim>::kMaxIndex - 4) * dx;
+    return x.allFinite() && x.cwiseAbs().maxCoeff() < reach;
+}
+
+template <int Dim>
 void check_in_grid(const Particles<Dim>& particles, int p, double dx)
 {
     const auto& x = particles.x[static_cast<std::size_t>(p)];
-    const double reach = static_cast<double>(SparseGrid<Dim>::kMaxIndex - 4) * dx;
-    if (!x.allFinite() || x.cwiseAbs().maxCoeff() >= reach) {
+    if (!in_grid<Dim>(x, dx)) {
+        const double reach = static_cast<double>(SparseGrid<Dim>::kMaxIndex - 4) * dx;
         std::ostringstream message;
         message << "particle " << p << " at (" << x.transpose() << ") lies outside the grid's domain, |x| < "
                 << reach << " in each axis (2^20 cells of dx = " << dx << ")";
@@ -34,11 +41,11 @@ namespace {
 /// A node's mass and momentum together, (m, m v): one vector operation a
 /// node in the scatter (four doubles in 3D, AVX's width).
 template <int Dim>
-using MassMomentum = Eigen::Matrix<double, Dim + 1, 1>;
+using MassMomentum = typename decltype(SparseGrid<Dim>::StepBuffers::mass_momentum)::value_type;
 
 /// A node's velocity as the gather reads it, padded to four doubles in 3D.
 template <int Dim>
-using PackedVelocity = Eigen::Matrix<double, Dim == 3 ? 4 : Dim, 1>;
+using PackedVelocity = typename decltype(SparseGrid<Dim>::StepBuffers::velocity)::value_type;
 
 /// The weights and distances of a stencil's tables as local arrays of a
 /// width known when compiling: the loops unroll, and the stores into the
@@ -143,6 +150,24 @@ Gathered<Dim> gather(const typename ParticleBuckets<Dim>::Bucket& bucket, const 
     return out;
 }
 
+/// How many particles ahead a transfer asks for their data: about a memory
+/// latency's worth of one particle's work.
+constexpr int kPrefetchAhead = 4;
+
+/// Asks the cache for entry i of every array (its first and last byte: a
+/// 3×3 matrix spans two cache lines): transfers visit the particles bucket
+/// after bucket, which jumps through their arrays.
+template <typename... Arrays>
+void prefetch_entry(std::size_t i, const Arrays&... arrays)
+{
+    auto fetch = [i](const auto& array) {
+        const char* entry = reinterpret_cast<const char*>(&array[i]);
+        __builtin_prefetch(entry);
+        __builtin_prefetch(entry + sizeof(array[i]) - 1);
+    };
+    (fetch(arrays), ...);
+}
+
 /// scatter or gather with the flag and the stencil width as template
 /// arguments: call(std::integral_constant<bool, flag>, std::integral_constant<int, width>).
 template <typename Call>
@@ -168,10 +193,21 @@ ParticleBuckets<Dim> particles_to_grid(const Particles<Dim>& particles, const Tr
     const double dx = grid.dx();
     const bool affine = settings.scheme == TransferScheme::apic;
     const bool flip = settings.scheme == TransferScheme::pic_flip;
-    std::vector<MassMomentum<Dim>> q(static_cast<std::size_t>(grid.slots()), MassMomentum<Dim>::Zero());
+    const int slots = grid.slots();
+    std::vector<MassMomentum<Dim>>& q = grid.buffers.mass_momentum;
+    q.resize(static_cast<std::size_t>(slots));
+#pragma omp parallel for schedule(static)
+    for (int slot = 0; slot < slots; ++slot)
+        q[static_cast<std::size_t>(slot)].setZero();
     for_each_bucket_by_colour(layout, [&](const Bucket& bucket) {
         for (int j = bucket.first; j < bucket.last; ++j) {
             const auto i = static_cast<std::size_t>(layout.order[static_cast<std::size_t>(j)]);
+            if (j + kPrefetchAhead < bucket.last) {
+                const auto next = static_cast<std::size_t>(layout.order[static_cast<std::size_t>(j + kPrefetchAhead)]);
+                prefetch_entry(next, particles.x, particles.v, particles.C, particles.mass);
+                if (impulses)
+                    prefetch_entry(next, *impulses);
+            }
             const double m = particles.mass[i];
             Matrix A = affine ? Matrix(m * particles.C[i]) : Matrix::Zero();  // m_p C_p + S_p
             if (impulses)
@@ -183,7 +219,6 @@ ParticleBuckets<Dim> particles_to_grid(const Particles<Dim>& particles, const Tr
             });
         }
     });
-    const int slots = grid.slots();
 #pragma omp parallel for schedule(static)
     for (int slot = 0; slot < slots; ++slot) {
         const auto s = static_cast<std::size_t>(slot);
@@ -197,17 +232,23 @@ ParticleBuckets<Dim> particles_to_grid(const Particles<Dim>& particles, const Tr
     return layout;
 }
 
+namespace {
+
+/// grid_to_particles, and with `advection` (a step h) x_p ← x_p + h v_p and
+/// F_p ← (I + h C_p) F_p while the particle's data is at hand.
 template <int Dim>
-void grid_to_particles(const SparseGrid<Dim>& grid, const ParticleBuckets<Dim>& layout, const TransferSettings& settings,
-                       Particles<Dim>& particles)
+void gather_to_particles(const SparseGrid<Dim>& grid, const ParticleBuckets<Dim>& layout, const TransferSettings& settings,
+                         const double* advection, Particles<Dim>& particles)
 {
     using Vector = typename SparseGrid<Dim>::Vector;
+    using Matrix = typename Particles<Dim>::Matrix;
     using Bucket = typename ParticleBuckets<Dim>::Bucket;
     const double dx = grid.dx();
     const double inverse_D = 1.0 / (apic_inertia_factor(settings.order) * dx * dx);  // D_p⁻¹ = I/(σ dx²)
     const bool flip = settings.scheme == TransferScheme::pic_flip;
     const int slots = grid.slots();
-    std::vector<PackedVelocity<Dim>> velocity(static_cast<std::size_t>(slots));
+    std::vector<PackedVelocity<Dim>>& velocity = grid.buffers.velocity;
+    velocity.resize(static_cast<std::size_t>(slots));
 #pragma omp parallel for schedule(static)
     for (int slot = 0; slot < slots; ++slot) {
         PackedVelocity<Dim>& packed = velocity[static_cast<std::size_t>(slot)];
@@ -217,6 +258,9 @@ void grid_to_particles(const SparseGrid<Dim>& grid, const ParticleBuckets<Dim>& 
     for_each_bucket(layout, [&](const Bucket& bucket) {
         for (int j = bucket.first; j < bucket.last; ++j) {
             const auto i = static_cast<std::size_t>(layout.order[static_cast<std::size_t>(j)]);
+            if (j + kPrefetchAhead < bucket.last)
+                prefetch_entry(static_cast<std::size_t>(layout.order[static_cast<std::size_t>(j + kPrefetchAhead)]), particles.x, particles.v,
+                               particles.C, particles.F);
             const StencilTables<Dim> tables(bucket, particles.x[i], dx, settings.order);
             const Gathered<Dim> sums = with_constants(flip, tables.width, [&](auto with_flip, auto width) {
                 return gather<Dim, decltype(with_flip)::value, decltype(width)::value>(bucket, tables, velocity.data(), grid);
@@ -225,10 +269,33 @@ void grid_to_particles(const SparseGrid<Dim>& grid, const ParticleBuckets<Dim>& 
             particles.v[i] = flip ? Vector((1.0 - settings.flip_ratio) * sums.velocity +
                                            settings.flip_ratio * (particles.v[i] + sums.increment))
                                   : sums.velocity;
+            if (advection) {
+                const double h = *advection;
+                particles.x[i] += h * particles.v[i];
+                particles.F[i] = (Matrix::Identity() + h * particles.C[i]) * particles.F[i];  // Fⁿ⁺¹ = (I + Δt ∇v) Fⁿ
+            }
         }
     });
 }
 
+} // namespace
+
+template <int Dim>
+void grid_to_particles(const SparseGrid<Dim>& grid, const ParticleBuckets<Dim>& layout, const TransferSettings& settings,
+                       Particles<Dim>& particles)
+{
+    gather_to_particles(grid, layout, settings, nullptr, particles);
+}
+
+template <int Dim>
+void grid_to_particles_advected(const SparseGrid<Dim>& grid, const ParticleBuckets<Dim>& layout,
+                                const TransferSettings& settings, double time_step, Particles<Dim>& particles)
+{
+    gather_to_particles(grid, layout, settings, &time_step, particles);
+}
+
+template bool in_grid<2>(const Eigen::Vector2d&, double);
+template bool in_grid<3>(const Eigen::Vector3d&, double);
 template void check_in_grid<2>(const Particles<2>&, int, double);
 template void check_in_grid<3>(const Particles<3>&, int, double);
 template BSplineStencil<2> checked_stencil<2>(const Particles<2>&, int, double, SplineOrder);
@@ -239,5 +306,9 @@ template ParticleBuckets<3> particles_to_grid<3>(const Particles<3>&, const Tran
                                                  const std::vector<Eigen::Matrix3d>*);
 template void grid_to_particles<2>(const SparseGrid<2>&, const ParticleBuckets<2>&, const TransferSettings&, Particles<2>&);
 template void grid_to_particles<3>(const SparseGrid<3>&, const ParticleBuckets<3>&, const TransferSettings&, Particles<3>&);
+template void grid_to_particles_advected<2>(const SparseGrid<2>&, const ParticleBuckets<2>&, const TransferSettings&, double,
+                                            Particles<2>&);
+template void grid_to_particles_advected<3>(const SparseGrid<3>&, const ParticleBuckets<3>&, const TransferSettings&, double,
+                                            Particles<3>&);
 
 } // namespace sinew

@@ -45,8 +45,20 @@ template <int Dim>
 void grid_to_particles(const SparseGrid<Dim>& grid, const ParticleBuckets<Dim>& layout, const TransferSettings& settings,
                        Particles<Dim>& particles);
 
+/// grid_to_particles and, in the same pass over the particles, their
+/// advection over a step of h: x_p ← x_p + h v_p and F_p ← (I + h C_p) F_p
+/// (Fⁿ⁺¹ = (I + Δt ∇v) Fⁿ, ∇v_p = C_p).
+template <int Dim>
+void grid_to_particles_advected(const SparseGrid<Dim>& grid, const ParticleBuckets<Dim>& layout,
+                                const TransferSettings& settings, double time_step, Particles<Dim>& particles);
+
+/// Whether the grid can hold the stencil of a particle at x: every
+/// coordinate finite and within 2²⁰ − 4 cells of dx of the origin.
+template <int Dim>
+bool in_grid(const Eigen::Matrix<double, Dim, 1>& x, double dx);
+
 /// InputError naming particle p and its position when the grid cannot hold
-/// its stencil (a coordinate not finite, or beyond 2²⁰ − 4 cells of dx).
+/// its stencil (not in_grid).
 template <int Dim>
 void check_in_grid(const Particles<Dim>& particles, int p, double dx);
 
