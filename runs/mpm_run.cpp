@@ -137,15 +137,15 @@ double largest_hessian_diagonal(Nlp& nlp, const Eigen::VectorXd& x)
     return largest;
 }
 
-/// The implicit steps' solve: the settings' solver, its iterations and
-/// verdicts counted. Each step's KKT tolerance, and the gradient target of a
+/// The implicit steps' solve: the settings' solver, its counts and
+/// verdicts summed. Each step's KKT tolerance, and the gradient target of a
 /// solver that declares one (unless the caller set it), are relative to the
 /// step's force scale max(‖∇E(v*)‖∞, ‖v*‖∞ · max Hᵢᵢ), as a time step's are
 /// (runs/step_gradient_target.hpp): a step that starts at its solution up to
 /// round-off (free fall) ends there, converged.
 struct ImplicitSolves {
     const SceneRunSettings& settings;
-    int iterations = 0;
+    Result counts;  ///< every solve's iterations, evaluations and statistics (assembly and factorization time)
     int not_converged = 0;
 
     GridVelocitySolve solve()
@@ -164,7 +164,7 @@ struct ImplicitSolves {
                     option_text(step_gradient_target(settings.options.tolerance, force_scale, predictor, diagonal));
             const Result result = sinew::solve(nlp, settings.solver, options);
             v = result.x;
-            iterations += result.iterations;
+            add_counts(counts, result);
             const bool converged = result.status == Status::converged;
             not_converged += converged ? 0 : 1;
             return converged;
@@ -177,7 +177,7 @@ class MpmRun {
 public:
     MpmRun(const MpmScene& scene, const SceneRunSettings& settings)
         : scene_(scene), settings_(settings), setup_(std::get<MpmSetup<Dim>>(scene.setup)),
-          particles_(setup_.particles), grid_(scene.dx), solves_{settings}
+          particles_(setup_.particles), grid_(scene.dx), solves_{settings, Result{}, 0}
     {
         for (const GridCollider<Dim>& collider : setup_.step.colliders)
             moving_.push_back(std::make_shared<PlacedBody>(*collider.body));
@@ -221,7 +221,7 @@ public:
         outcome.run.problem = "mpm";
         outcome.run.status = outcome.converged ? Status::converged : solved ? Status::failed : Status::max_iterations;
         outcome.run.message = outcome.converged ? "reached t = " + format_number(scene_.duration) + " s" : outcome.stopped;
-        outcome.run.iterations = solves_.iterations;
+        add_counts(outcome.run, solves_.counts);
         outcome.run.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         outcome.run.statistics["steps"] = static_cast<double>(sub_steps_);
         write_result(outcome);
@@ -302,8 +302,8 @@ private:
         row.frame = frame;
         row.time = scene_.duration * static_cast<double>(steps) / static_cast<double>(step_count(scene_, setup_.step.time_step));
         row.steps = sub_steps_;
-        row.iterations = solves_.iterations - iterations_recorded_;
-        iterations_recorded_ = solves_.iterations;
+        row.iterations = solves_.counts.iterations - iterations_recorded_;
+        iterations_recorded_ = solves_.counts.iterations;
         row.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         outcome.frames.push_back(row);
         if (!folder_.empty() && settings_.vtu != VtuOutput::none) {
@@ -361,6 +361,7 @@ private:
             {"stopped", outcome.stopped},
             {"status", to_string(outcome.run.status)},
             {"iterations", outcome.run.iterations},
+            {"statistics", outcome.run.statistics},
             {"time_s", outcome.run.time_s},
             {"vtp", files},
             {"grid_vtu", grid_files},

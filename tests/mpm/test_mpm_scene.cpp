@@ -140,8 +140,12 @@ TEST_CASE("mpm scenes: a run writes a VTP per frame, result.pvd and result.json,
         const Eigen::Vector3d p = outcome.frames.back().linear_momentum;
         const double mass = total_mass(std::get<MpmSetup<2>>(scene.mpm->setup).particles);
         CHECK(p[1] / mass == Approx(-9.81 * 0.2).epsilon(1e-6));
-        if (stepping == "implicit")
+        if (stepping == "implicit") {  // every solve's counts summed, the factorizations among them
             CHECK(outcome.run.iterations > 0);
+            CHECK(result["iterations"] == outcome.run.iterations);
+            CHECK(result["statistics"]["factorizations"].get<double>() >= outcome.run.iterations);
+            CHECK(result["statistics"]["factorization_s"].get<double>() > 0.0);
+        }
     }
 }
 
