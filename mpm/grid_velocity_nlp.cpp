@@ -141,7 +141,11 @@ void GridVelocityNlp<Dim>::add_block(int a, int b, const Matrix& H_ab, VectorRef
         return;  // a node held at v_b: no unknowns
     const auto& Ba = frames_[static_cast<std::size_t>(a)].basis;
     const auto& Bb = frames_[static_cast<std::size_t>(b)].basis;
-    const Eigen::MatrixXd reduced = Ba.transpose() * H_ab * Bb;  // B_aᵀ H_ab B_b
+    // B_aᵀ H_ab B_b in storage of at most Dim × Dim on the stack: no heap
+    // allocation for each of a particle's 27·28/2 blocks.
+    using Reduced = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, Dim, Dim>;
+    const Reduced left = Ba.transpose() * H_ab;
+    const Reduced reduced = left * Bb;
     int k = start;
     for (int n = 0; n < reduced.rows(); ++n)
         for (int m = 0; m < (a == b ? n + 1 : reduced.cols()); ++m)
