@@ -1,9 +1,11 @@
 #include "sinew/mpm/grid_velocity_nlp.hpp"
 
 #include "sinew/core/input_error.hpp"
+#include "sinew/mpm/bucket_loops.hpp"
 #include "sinew/mpm/transfers.hpp"
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 namespace sinew {
@@ -22,9 +24,13 @@ int power(int base, int exponent)
 template <int Dim>
 GridVelocityNlp<Dim>::GridVelocityNlp(const Particles<Dim>& particles,
                                       const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
-                                      const SparseGrid<Dim>& grid, const MpmStepSettings<Dim>& settings)
-    : particles_(particles), models_(models), time_step_(settings.time_step)
+                                      const SparseGrid<Dim>& grid, const ParticleBuckets<Dim>& layout,
+                                      const MpmStepSettings<Dim>& settings)
+    : particles_(particles), models_(models), layout_(layout), time_step_(settings.time_step)
 {
+    if (static_cast<int>(layout.order.size()) != particles.size())
+        throw std::invalid_argument("GridVelocityNlp: a layout of " + std::to_string(layout.order.size()) +
+                                    " particles for " + std::to_string(particles.size()));
     if (!(time_step_ > 0.0) || !std::isfinite(time_step_))
         throw InputError("the implicit MPM step needs a finite time step > 0, not " + std::to_string(time_step_));
     for (int p = 0; p < particles.size(); ++p) {
@@ -257,39 +263,50 @@ void GridVelocityNlp<Dim>::gradient(ConstVectorRef y, VectorRef grad)
 template <int Dim>
 void GridVelocityNlp<Dim>::assemble_hessian(ConstVectorRef y, double sigma, Projection projection, VectorRef values)
 {
-    using Stiffness = typename ConstitutiveModel<Dim, Dim>::Stiffness;
-    using Lifted = Eigen::Matrix<double, Dim * Dim, Dim>;  // (∂P/∂F) J_t
+    using Lifted = Eigen::Matrix<double, Dim * Dim, Dim>;
     update_velocities(y);
     values.setZero();
     for (int a = 0; a < nodes(); ++a)
         add_block(a, a, sigma * node_mass_[static_cast<std::size_t>(a)] * Matrix::Identity(), values);  // m_i I
-    std::vector<Lifted> lifted(static_cast<std::size_t>(stencil_nodes_));
-    for (int p = 0; p < particles_.size(); ++p) {
-        const auto i = static_cast<std::size_t>(p);
-        Stiffness K;
-        models_[static_cast<std::size_t>(particles_.material[i])]->evaluate(deformation_at_velocities(p),
-                                                                            particles_.point[i], nullptr, &K, projection);
-        const double scale = sigma * time_step_ * time_step_ * particles_.volume[i];  // σ Δt² V_p⁰
-        const Coupling* c = &couplings_[i * static_cast<std::size_t>(stencil_nodes_)];
+    // The buckets of one colour reach disjoint nodes, so their particles add
+    // into disjoint blocks of the Hessian.
+    for_each_bucket_by_colour(layout_, [&](const typename ParticleBuckets<Dim>::Bucket& bucket) {
+        std::vector<Lifted> lifted(static_cast<std::size_t>(stencil_nodes_));
+        for (int j = bucket.first; j < bucket.last; ++j)
+            add_particle_hessian(layout_.order[static_cast<std::size_t>(j)], sigma, projection, lifted, values);
+    });
+}
+
+template <int Dim>
+void GridVelocityNlp<Dim>::add_particle_hessian(int p, double sigma, Projection projection,
+                                                std::vector<Eigen::Matrix<double, Dim * Dim, Dim>>& lifted,
+                                                VectorRef values) const
+{
+    using Stiffness = typename ConstitutiveModel<Dim, Dim>::Stiffness;
+    const auto i = static_cast<std::size_t>(p);
+    Stiffness K;
+    models_[static_cast<std::size_t>(particles_.material[i])]->evaluate(deformation_at_velocities(p), particles_.point[i],
+                                                                        nullptr, &K, projection);
+    const double scale = sigma * time_step_ * time_step_ * particles_.volume[i];  // σ Δt² V_p⁰
+    const Coupling* c = &couplings_[i * static_cast<std::size_t>(stencil_nodes_)];
+    for (int t = 0; t < stencil_nodes_; ++t) {
+        // (K J_t)(:, col) = Σ_l K(:, col + D l) b_t,l
+        auto& KJ = lifted[static_cast<std::size_t>(t)];
+        KJ.setZero();
+        for (int col = 0; col < Dim; ++col)
+            for (int l = 0; l < Dim; ++l)
+                KJ.col(col) += c[t].b[l] * K.col(col + Dim * l);
+    }
+    for (int s = 0; s < stencil_nodes_; ++s) {
         for (int t = 0; t < stencil_nodes_; ++t) {
-            // (K J_t)(:, col) = Σ_l K(:, col + D l) b_t,l
-            Lifted& KJ = lifted[static_cast<std::size_t>(t)];
-            KJ.setZero();
-            for (int col = 0; col < Dim; ++col)
-                for (int l = 0; l < Dim; ++l)
-                    KJ.col(col) += c[t].b[l] * K.col(col + Dim * l);
-        }
-        for (int s = 0; s < stencil_nodes_; ++s) {
-            for (int t = 0; t < stencil_nodes_; ++t) {
-                if (c[s].node < 0 || c[t].node < 0 || c[s].node < c[t].node)
-                    continue;
-                // (J_sᵀ K J_t)(n, col) = Σ_l b_s,l (K J_t)(n + D l, col)
-                const Lifted& KJ = lifted[static_cast<std::size_t>(t)];
-                Matrix H = Matrix::Zero();
-                for (int l = 0; l < Dim; ++l)
-                    H += c[s].b[l] * KJ.template middleRows<Dim>(Dim * l);
-                add_block(c[s].node, c[t].node, scale * H, values);
-            }
+            if (c[s].node < 0 || c[t].node < 0 || c[s].node < c[t].node)
+                continue;
+            // (J_sᵀ K J_t)(n, col) = Σ_l b_s,l (K J_t)(n + D l, col)
+            const auto& KJ = lifted[static_cast<std::size_t>(t)];
+            Matrix H = Matrix::Zero();
+            for (int l = 0; l < Dim; ++l)
+                H += c[s].b[l] * KJ.template middleRows<Dim>(Dim * l);
+            add_block(c[s].node, c[t].node, scale * H, values);
         }
     }
 }

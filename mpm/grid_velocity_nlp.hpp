@@ -1,6 +1,7 @@
 #pragma once
 #include "sinew/energies/models/constitutive_model.hpp"
 #include "sinew/mpm/node_velocity_frame.hpp"
+#include "sinew/mpm/particle_buckets.hpp"
 #include "sinew/mpm/particles.hpp"
 #include "sinew/mpm/sparse_grid.hpp"
 #include "sinew/mpm/step_settings.hpp"
@@ -32,8 +33,10 @@ namespace sinew {
 /// hold moves in its NodeVelocityFrame, v_i = offset_i + B_i y_i (decided at
 /// v*), and the unknowns are the y_i, node after node in slot order (none
 /// for a node held at v_b). Derivatives in y: B_iᵀ ∂E/∂v_i and B_iᵀ (∂²E/∂v_i∂v_j) B_j.
-/// Built after particles_to_grid; the particles, models and grid must
-/// outlive it and stay unchanged.
+/// Built after particles_to_grid, on the layout it returned; the particles,
+/// models, grid and layout must outlive it and stay unchanged. The Hessian
+/// is assembled on the layout's buckets, colour by colour (one result
+/// whatever the thread count, as the transfers).
 template <int Dim>
 class GridVelocityNlp final : public Nlp {
 public:
@@ -41,7 +44,7 @@ public:
     using Matrix = Eigen::Matrix<double, Dim, Dim>;
 
     GridVelocityNlp(const Particles<Dim>& particles, const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
-                    const SparseGrid<Dim>& grid, const MpmStepSettings<Dim>& settings);
+                    const SparseGrid<Dim>& grid, const ParticleBuckets<Dim>& layout, const MpmStepSettings<Dim>& settings);
 
     std::string name() const override { return "mpm-grid-velocities"; }
     int num_variables() const override { return variables_; }
@@ -80,12 +83,16 @@ private:
     /// values += B_aᵀ H_ab B_b into the block of nodes a ≥ b (lower triangle only when a = b).
     void add_block(int a, int b, const Matrix& H_ab, VectorRef values) const;
     void assemble_hessian(ConstVectorRef y, double sigma, Projection projection, VectorRef values);
+    /// values += particle p's σ Δt² V_p⁰ J_sᵀ (∂P/∂F) J_t blocks; `lifted` is scratch of stencil_nodes_ entries.
+    void add_particle_hessian(int p, double sigma, Projection projection,
+                              std::vector<Eigen::Matrix<double, Dim * Dim, Dim>>& lifted, VectorRef values) const;
     /// Every node's velocity at y, into velocities_.
     void update_velocities(ConstVectorRef y);
     Matrix deformation_at_velocities(int particle) const;
 
     const Particles<Dim>& particles_;
     const std::vector<const ConstitutiveModel<Dim, Dim>*>& models_;
+    const ParticleBuckets<Dim>& layout_;
     double time_step_;
     int variables_ = 0;
     int stencil_nodes_ = 0;  ///< nodes a particle reaches: width^Dim

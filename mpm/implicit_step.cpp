@@ -13,7 +13,7 @@ ImplicitStepReport implicit_step(Particles<Dim>& particles, const std::vector<co
 {
     ImplicitStepReport report;
     const ParticleBuckets<Dim> layout = particles_to_grid(particles, settings.transfer, grid);
-    GridVelocityNlp<Dim> nlp(particles, models, grid, settings);
+    GridVelocityNlp<Dim> nlp(particles, models, grid, layout, settings);
     report.unknowns = nlp.num_variables();
     Eigen::VectorXd v = nlp.starting_point();
     if (!std::isfinite(nlp.objective(v))) {

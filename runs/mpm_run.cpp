@@ -193,9 +193,9 @@ public:
                              "); lower it, set \"substeps\": true, or use \"stepping\": \"implicit\"");
         if (scene_.stepping == MpmStepping::implicit_steps) {
             SparseGrid<Dim> grid(scene_.dx);
-            particles_to_grid(particles_, setup_.step.transfer, grid);
+            const ParticleBuckets<Dim> layout = particles_to_grid(particles_, setup_.step.transfer, grid);
             const auto models = setup_.model_pointers();
-            GridVelocityNlp<Dim> nlp(particles_, models, grid, step_settings());
+            GridVelocityNlp<Dim> nlp(particles_, models, grid, layout, step_settings());
             check_solve(nlp, settings_.solver, settings_.options);
         }
     }

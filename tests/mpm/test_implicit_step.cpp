@@ -7,6 +7,7 @@
 #include "energies/deformation_regimes.hpp"
 
 #include "sinew/core/input_error.hpp"
+#include "sinew/core/threads.hpp"
 #include "sinew/energies/models/model_catalog.hpp"
 #include "sinew/mpm/cfl.hpp"
 #include "sinew/mpm/explicit_step.hpp"
@@ -93,13 +94,13 @@ void check_grid_velocity_nlp(const std::vector<const ConstitutiveModel<Dim, Dim>
     CAPTURE(models[0]->name(), Dim, regime_name(regime), walls.has_value());
     const Particles<Dim> particles = deformed_block<Dim>(regime, rng);
     SparseGrid<Dim> grid(0.1);
-    particles_to_grid(particles, TransferSettings{}, grid);
+    const ParticleBuckets<Dim> layout = particles_to_grid(particles, TransferSettings{}, grid);
     // Δt² μ /(ρ dx²) = 25: the elastic term outweighs inertia in the Hessian.
     MpmStepSettings<Dim> settings;
     settings.time_step = 0.05;
     settings.gravity = Vec<Dim>::Constant(-9.81);
     settings.walls = walls;
-    GridVelocityNlp<Dim> nlp(particles, models, grid, settings);
+    GridVelocityNlp<Dim> nlp(particles, models, grid, layout, settings);
     if (walls)
         CHECK((nlp.num_variables() > 0 && nlp.num_variables() < Dim * nlp.nodes()));
     else
@@ -171,7 +172,7 @@ TEST_CASE("implicit MPM: F_p(v) of the NLP is the F the transfers and the advect
     settings.time_step = 0.01;
     SparseGrid<3> grid(0.1);
     const ParticleBuckets<3> layout = particles_to_grid(particles, settings.transfer, grid);
-    GridVelocityNlp<3> nlp(particles, models, grid, settings);
+    GridVelocityNlp<3> nlp(particles, models, grid, layout, settings);
     Eigen::VectorXd v = nlp.starting_point() + Eigen::VectorXd::Random(nlp.num_variables());
     std::vector<Eigen::Matrix3d> expected;
     for (int p = 0; p < particles.size(); ++p)
@@ -181,6 +182,36 @@ TEST_CASE("implicit MPM: F_p(v) of the NLP is the F the transfers and the advect
     finish_step(settings, grid, layout, particles);
     for (int p = 0; p < particles.size(); ++p)
         CHECK((particles.F[static_cast<std::size_t>(p)] - expected[static_cast<std::size_t>(p)]).norm() < 1e-13);
+}
+
+TEST_CASE("implicit MPM: the Hessian is the same bit for bit on one thread and on two")
+{
+    std::mt19937 rng(23);
+    const auto model = lame_model<3>("stable-neo-hookean", 1e5, 2e5);
+    const std::vector<const Model3d*> models{model.get()};
+    const Particles<3> particles = deformed_block<3>(Regime::large_stretch, rng);
+    MpmStepSettings<3> settings;
+    settings.time_step = 0.01;
+    SparseGrid<3> grid(0.1);
+    const ParticleBuckets<3> layout = particles_to_grid(particles, settings.transfer, grid);
+    GridVelocityNlp<3> nlp(particles, models, grid, layout, settings);
+    const Eigen::VectorXd v = nlp.starting_point() + 0.1 * Eigen::VectorXd::Ones(nlp.num_variables());
+    const Eigen::VectorXd none;
+    std::vector<Eigen::VectorXd> values;
+    for (const int count : {1, std::min(2, available_cores())}) {
+        set_threads(count);
+        for (const Projection projection : {Projection::none, Projection::clamp}) {
+            values.emplace_back(nlp.hessian_pattern().nonzeros());
+            nlp.hessian(v, 1.0, none, projection, values.back());
+        }
+    }
+    set_threads(available_cores());
+    if (available_cores() < 2)
+        WARN("one core: both assemblies were on one thread");
+    REQUIRE(values[0].size() > 0);
+    CHECK(values[0].cwiseAbs().maxCoeff() > 0.0);
+    CHECK((values[0].array() == values[2].array()).all());
+    CHECK((values[1].array() == values[3].array()).all());
 }
 
 TEST_CASE("implicit MPM: every strategy that accepts the grid-velocity NLP finds the same step")
@@ -202,8 +233,8 @@ TEST_CASE("implicit MPM: every strategy that accepts the grid-velocity NLP finds
         if (solver->name() == "projected-newton")
             continue;
         SparseGrid<2> probe_grid(0.1);
-        particles_to_grid(start, settings.transfer, probe_grid);
-        GridVelocityNlp<2> probe(start, models, probe_grid, settings);
+        const ParticleBuckets<2> probe_layout = particles_to_grid(start, settings.transfer, probe_grid);
+        GridVelocityNlp<2> probe(start, models, probe_grid, probe_layout, settings);
         if (solver->refusal(probe) || solver->name().rfind("nlopt", 0) == 0)
             continue;  // NLopt's tolerances are on steps, not on the gradient: not comparable at 1e-7
         CAPTURE(solver->name());
