@@ -5,6 +5,7 @@
 #include "sinew/energies/models/model_catalog.hpp"
 #include "sinew/mpm/cfl.hpp"
 #include "sinew/mpm/explicit_step.hpp"
+#include "sinew/mpm/particle_buckets.hpp"
 #include "sinew/mpm/particle_sampling.hpp"
 #include "sinew/problems/quasistatic/scene_reader.hpp"
 #include "sinew/runs/mpm_run.hpp"
@@ -48,7 +49,8 @@ double triad_bandwidth()
 }
 
 /// A cube of about `count` particles (2 × 2 × 2 a cell of dx = 1 cm),
-/// stretched 1 % and spinning at 1 rad/s, so that every particle has a stress.
+/// stretched 1 % and spinning at 1 rad/s, so that every particle has a
+/// stress; numbered block after block, as an mpm run numbers its particles.
 Particles<3> spinning_cube(double count)
 {
     LatticeSampling<3> sampling;
@@ -62,6 +64,7 @@ Particles<3> spinning_cube(double count)
         particles.C[i] << 0, -1, 0, 1, 0, 0, 0, 0, 0;
         particles.F[i] = Eigen::Vector3d(1.01, 1.0, 1.0).asDiagonal();
     }
+    sort_particles_by_block(particles, sampling.dx, SplineOrder::quadratic);
     return particles;
 }
 

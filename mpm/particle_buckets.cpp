@@ -97,7 +97,16 @@ ParticleBuckets<Dim> lay_out_grid(const Particles<Dim>& particles, SplineOrder o
     return out;
 }
 
+template <int Dim>
+void sort_particles_by_block(Particles<Dim>& particles, double dx, SplineOrder order)
+{
+    SparseGrid<Dim> grid(dx);
+    particles.reorder(lay_out_grid(particles, order, grid).order);
+}
+
 template ParticleBuckets<2> lay_out_grid<2>(const Particles<2>&, SplineOrder, SparseGrid<2>&);
 template ParticleBuckets<3> lay_out_grid<3>(const Particles<3>&, SplineOrder, SparseGrid<3>&);
+template void sort_particles_by_block<2>(Particles<2>&, double, SplineOrder);
+template void sort_particles_by_block<3>(Particles<3>&, double, SplineOrder);
 
 } // namespace sinew

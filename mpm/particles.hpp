@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 
+#include <type_traits>
 #include <vector>
 
 namespace sinew {
@@ -41,6 +42,27 @@ struct Particles {
         C.push_back(Matrix::Zero());
         material.push_back(material_index);
         point.emplace_back();
+    }
+
+    /// Renumbers the particles: particle k becomes the one that was
+    /// order[k] (order a permutation of 0 … size − 1). Every array above.
+    void reorder(const std::vector<int>& order)
+    {
+        auto permuted = [&order](auto& values) {
+            std::decay_t<decltype(values)> out;
+            out.reserve(values.size());
+            for (const int k : order)
+                out.push_back(values[static_cast<std::size_t>(k)]);
+            values.swap(out);
+        };
+        permuted(x);
+        permuted(v);
+        permuted(mass);
+        permuted(volume);
+        permuted(F);
+        permuted(C);
+        permuted(material);
+        permuted(point);
     }
 };
 

@@ -11,6 +11,7 @@
 #include "sinew/mpm/explicit_step.hpp"
 #include "sinew/mpm/grid_velocity_nlp.hpp"
 #include "sinew/mpm/implicit_step.hpp"
+#include "sinew/mpm/particle_buckets.hpp"
 #include "sinew/mpm/particle_measures.hpp"
 #include "sinew/runs/output_file.hpp"
 #include "sinew/runs/result_json.hpp"
@@ -179,6 +180,7 @@ public:
         : scene_(scene), settings_(settings), setup_(std::get<MpmSetup<Dim>>(scene.setup)),
           particles_(setup_.particles), grid_(scene.dx), solves_{settings, Result{}, 0}
     {
+        sort_particles_by_block(particles_, scene.dx, setup_.step.transfer.order);  // the run's numbering from frame 0
         for (const GridCollider<Dim>& collider : setup_.step.colliders)
             moving_.push_back(std::make_shared<PlacedBody>(*collider.body));
     }

@@ -3,7 +3,8 @@
 // angular momentum both ways, PIC/FLIP blends as documented, G2P with the
 // advection fused equals the two apart, a reused grid equals a fresh one,
 // and a particle outside the grid's domain is an input error; the grid's
-// layout finds every stencil node at its slot.
+// layout finds every stencil node at its slot, and particles sorted by
+// block are laid out in their own order.
 #include "mpm/particle_clouds.hpp"
 
 #include "sinew/core/input_error.hpp"
@@ -14,6 +15,8 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <numeric>
 #include <limits>
 
 using namespace sinew;
@@ -248,6 +251,43 @@ TEST_CASE("transfers: the grid's layout finds every stencil node of every partic
     check_layout<2>(SplineOrder::cubic);
     check_layout<3>(SplineOrder::quadratic);
     check_layout<3>(SplineOrder::cubic);
+}
+
+TEST_CASE("transfers: particles sorted by block are laid out in their own order and keep every field")
+{
+    Particles<3> particles = random_particles<3>(400, -0.3, 0.7, 1.0, 1.0, 12);
+    for (int p = 0; p < particles.size(); ++p) {
+        const auto i = static_cast<std::size_t>(p);
+        particles.material[i] = p % 3;
+        particles.volume[i] = 1.0 + p;
+        particles.F[i] = (1.0 + 0.001 * p) * Eigen::Matrix3d::Identity();
+        particles.point[i].activation = 0.001 * p;
+    }
+    const Particles<3> before = particles;
+    sort_particles_by_block(particles, 0.05, SplineOrder::quadratic);
+    REQUIRE(particles.size() == before.size());
+    SparseGrid<3> grid(0.05);
+    const ParticleBuckets<3> layout = lay_out_grid(particles, SplineOrder::quadratic, grid);
+    std::vector<int> identity(static_cast<std::size_t>(particles.size()));
+    std::iota(identity.begin(), identity.end(), 0);
+    CHECK(layout.order == identity);  // bucket after bucket already
+    CHECK(layout.order != lay_out_grid(before, SplineOrder::quadratic, grid).order);  // the random cloud was not
+    std::vector<int> found(static_cast<std::size_t>(before.size()), 0);
+    int mismatched = 0;
+    for (int k = 0; k < particles.size(); ++k) {
+        const auto i = static_cast<std::size_t>(k);
+        const auto was = static_cast<std::size_t>(std::lround(particles.volume[i] - 1.0));  // volume 1 + original index
+        REQUIRE(was < found.size());
+        ++found[was];
+        mismatched += particles.x[i] != before.x[was] || particles.v[i] != before.v[was] ||
+                              particles.mass[i] != before.mass[was] || particles.F[i] != before.F[was] ||
+                              particles.C[i] != before.C[was] || particles.material[i] != before.material[was] ||
+                              particles.point[i].activation != before.point[was].activation
+                          ? 1
+                          : 0;
+    }
+    CHECK(mismatched == 0);
+    CHECK(std::count(found.begin(), found.end(), 1) == before.size());  // a permutation
 }
 
 TEST_CASE("active grid: every node with mass, and the cells with mass at every corner, in VTK's corner order")
