@@ -225,6 +225,33 @@ TEST_CASE("a surface body gives the answer of the analytic ball it approximates,
     CHECK(std::abs(faceted.energy - ipopt.energy) <= 1e-8 * std::abs(ipopt.energy));
 }
 
+TEST_CASE("augmented-lagrangian on a faceted ball ends in a few hundred iterations at the answer of Ipopt")
+{
+    // A node the multiplier method leaves a hair inside a faceted body sits
+    // where φ is not smooth (the distance inside a polyhedron has a ridge at
+    // every convex edge); its subproblems used to take Newton steps there
+    // until the iteration limit (3000 on block-on-sphere). Projected
+    // Newton's stagnation watch ends such a subproblem and the outer loop
+    // keeps the point when it is feasible, its multipliers settled and its
+    // KKT residual within tolerance.
+    const std::string scene = ball_scene(
+        R"("surface": {"generator": "icosphere", "center": [0, 0, -0.3], "radius": 0.3, "subdivisions": 4})", "");
+    SolverOptions tight;
+    tight.tolerance = 1e-10;
+    tight.kkt_tolerance = 1e-9;
+    const ContactSolve ipopt = solve_ball(scene, "ipopt", tight);
+    REQUIRE(ipopt.result.status == Status::converged);
+    const ContactSolve al = solve_ball(scene, "augmented-lagrangian");
+    CAPTURE(al.result.message, al.result.iterations);
+    CHECK(al.result.status == Status::converged);
+    CHECK(al.result.iterations < 500);
+    const double size = std::sqrt(1.0 + 1.0 + 0.09);
+    CHECK(al.penetration <= 1e-6 * size);
+    // Feasible to 1e-6 of the size with the contact force Σ|λ| ≈ 10² N: the
+    // energies agree to what that penetration moves them by.
+    CHECK(std::abs(al.energy - ipopt.energy) <= 1e-6 * std::abs(ipopt.energy));
+}
+
 TEST_CASE("the contact candidate set is refreshed between solves: margin 0 gives the answer of a wide margin")
 {
     const std::string ball = R"("sphere": {"center": [0, 0, -0.3], "radius": 0.3})";
