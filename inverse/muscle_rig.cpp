@@ -4,6 +4,7 @@
 #include "sinew/problems/quasistatic/dirichlet_set.hpp"
 #include "sinew/solvers/solver.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
@@ -33,11 +34,12 @@ void check_definition(const RigDefinition& rig)
     check_nodes(rig.cranium_nodes, nodes, "cranium");
     check_nodes(rig.jaw_nodes, nodes, "jaw");
     check_nodes(rig.landmarks, nodes, "landmark");
-    if (rig.contact) {
-        if (!rig.contact->body)
-            throw InputError("rig: the contact has no body");
-        check_nodes(rig.contact->nodes, nodes, "contact");
-    }
+    for (const auto* contact : {&rig.contact, &rig.jaw_contact})
+        if (*contact) {
+            if (!(*contact)->body)
+                throw InputError("rig: the contact has no body");
+            check_nodes((*contact)->nodes, nodes, "contact");
+        }
     if (rig.landmarks.empty())
         throw InputError("rig: no landmark");
     if (rig.muscle_names.size() != rig.muscle_elements.size())
@@ -72,6 +74,12 @@ MuscleRig::MuscleRig(RigDefinition definition, EquilibriumSolveSettings settings
             kDim, definition_.mesh.num_nodes(), std::make_shared<PlacedBody>(contact->body), contact->stiffness,
             contact->nodes);
         terms.push_back(contact_);
+    }
+    if (const auto& contact = definition_.jaw_contact) {
+        jaw_body_ = std::make_shared<PlacedBody>(contact->body);
+        jaw_contact_ = std::make_shared<ObstaclePenaltyPotential>(kDim, definition_.mesh.num_nodes(), jaw_body_,
+                                                                  contact->stiffness, contact->nodes);
+        terms.push_back(jaw_contact_);
     }
     auto potential = std::make_shared<TotalPotential>(std::move(terms));
     // Set 0 holds the cranium nodes at rest, set 1 places the jaw nodes (§2.3);
@@ -123,6 +131,8 @@ RigEvaluation MuscleRig::evaluate(const RigParameters& theta)
         for (const int e : definition_.muscle_elements[m])
             elastic_->set_activation(e, theta.activations[m]);
     problem_->set_affine_map(1, theta.jaw_map, theta.jaw_translation);
+    if (jaw_body_)
+        jaw_body_->set_affine_placement(theta.jaw_map, theta.jaw_translation);  // y ↦ M_j y + t_j
     if (warm_start_.size() > 0)
         problem_->set_starting_configuration(warm_start_);
     const auto start = std::chrono::steady_clock::now();
@@ -170,13 +180,21 @@ Eigen::VectorXd MuscleRig::landmark_positions() const
 double MuscleRig::max_penetration() const
 {
     require_evaluated();
-    return contact_ ? contact_->max_penetration(equilibrium_) : 0.0;
+    double deepest = 0.0;
+    for (const auto& contact : {contact_, jaw_contact_})
+        if (contact)
+            deepest = std::max(deepest, contact->max_penetration(equilibrium_));
+    return deepest;
 }
 
 Eigen::Vector3d MuscleRig::contact_force() const
 {
     require_evaluated();
-    return contact_ ? contact_->total_force(equilibrium_) : Eigen::Vector3d::Zero();
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();
+    for (const auto& contact : {contact_, jaw_contact_})
+        if (contact)
+            force += contact->total_force(equilibrium_);
+    return force;
 }
 
 EquilibriumSensitivities& MuscleRig::sensitivities()
@@ -204,6 +222,11 @@ ParameterDirections MuscleRig::equilibrium_directions() const
         elastic_->add_activation_gradient(equilibrium_, definition_.muscle_elements[k], column);  // −f_k (§2.1)
         directions.gradient_change.col(k) = column;
     }
+    // The body the jaw carries moves with M_j and t_j: ∂(∇E_c)/∂θ_jaw at the
+    // equilibrium, columns in the order of placement_gradient_derivatives.
+    if (jaw_contact_)
+        directions.gradient_change.middleCols(m, RigParameters::kAffineParameters) =
+            jaw_contact_->placement_gradient_derivatives(equilibrium_);
     // ∂x^C/∂M_j(a,b) = e_a X_b, ∂x^C/∂t_j(a) = e_a on the jaw nodes (§3.3).
     directions.prescribed_motion = Eigen::MatrixXd::Zero(n, m + RigParameters::kAffineParameters);
     for (const int node : definition_.jaw_nodes)

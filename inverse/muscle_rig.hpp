@@ -39,6 +39,10 @@ struct RigDefinition {
     std::vector<int> jaw_nodes;      ///< placed by the jaw map, x = M_j X + t_j (§2.3)
     std::vector<int> landmarks;      ///< node of each landmark
     std::optional<RigContact> contact;  ///< none: the tissue passes through bone
+    /// A body the jaw carries (the lower teeth): placed by the jaw map,
+    /// x = M_j y + t_j (§2.3), so that moving the jaw moves it and the
+    /// sensitivities see ∂(∇E_c)/∂θ_jaw. None: no such body.
+    std::optional<RigContact> jaw_contact;
 };
 
 /// The outcome of one evaluation of x̂(θ).
@@ -88,8 +92,8 @@ public:
     /// adjoint solve.
     Eigen::VectorXd landmark_gradient(const Eigen::VectorXd& w);
 
-    /// After a successful evaluate(), the largest depth of a node in the
-    /// contact body (m) and the force the body exerts on the tissue (N, in
+    /// After a successful evaluate(), the largest depth of a node in a
+    /// contact body (m) and the force the bodies exert on the tissue (N, in
     /// the cranium frame); 0 without contact.
     double max_penetration() const;
     Eigen::Vector3d contact_force() const;
@@ -116,6 +120,8 @@ private:
     EquilibriumSolveSettings settings_;
     std::shared_ptr<ElasticPotential> elastic_;
     std::shared_ptr<ObstaclePenaltyPotential> contact_;  ///< null without contact
+    std::shared_ptr<PlacedBody> jaw_body_;                   ///< null without a body carried by the jaw
+    std::shared_ptr<ObstaclePenaltyPotential> jaw_contact_;  ///< its penalty
     std::unique_ptr<QuasistaticProblem> problem_;
     double size_ = 1.0;
     std::optional<Eigen::VectorXd> last_theta_;

@@ -163,6 +163,32 @@ Eigen::Vector3d ObstaclePenaltyPotential::total_force(ConstVectorRef x) const
     return force;
 }
 
+Eigen::MatrixXd ObstaclePenaltyPotential::placement_gradient_derivatives(ConstVectorRef x) const
+{
+    if (dimension_ != 3)
+        throw InputError("obstacle penalty: placement derivatives need a 3D scene");
+    Eigen::MatrixXd columns = Eigen::MatrixXd::Zero(x.size(), 12);
+    const Eigen::Matrix3d& inverse = body_->inverse_map();
+    for (int k = 0; k < nodes_.cols(); ++k) {
+        const int node = nodes_(0, k);
+        const BodyDistance d = at_node(x, node);
+        if (!(d.distance < 0.0))
+            continue;
+        const double depth = -d.distance;  // δ
+        const Eigen::Vector3d& g = d.gradient;
+        const Eigen::Vector3d y = inverse * (x.segment<3>(3 * node) - body_->translation());  // A⁻¹(x_i − t)
+        const auto rows = Eigen::seqN(3 * node, 3);
+        for (int a = 0; a < 3; ++a) {
+            // ∂φ/∂t_a = −g_a, ∂g/∂t_a = −H e_a
+            columns(rows, 9 + a) = stiffness_ * (-g[a] * g + depth * d.hessian.col(a));
+            for (int b = 0; b < 3; ++b)  // ∂φ/∂A_ab = −g_a y_b, ∂g/∂A_ab = −g_a A⁻ᵀe_b − y_b H e_a
+                columns(rows, 3 * a + b) =
+                    stiffness_ * (-g[a] * y[b] * g + depth * (g[a] * inverse.row(b).transpose() + y[b] * d.hessian.col(a)));
+        }
+    }
+    return columns;
+}
+
 void ObstaclePenaltyPotential::add_output_data(ConstVectorRef x, OutputArrays& arrays)
 {
     Eigen::MatrixXd& depth = arrays.point_array("penetration", 1, 0.0);

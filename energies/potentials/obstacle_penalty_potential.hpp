@@ -69,6 +69,14 @@ public:
     double max_penetration(ConstVectorRef x) const;
     /// Σ_i ε δ_i ∇φ_i at x: the force the body exerts on the mesh, N.
     Eigen::Vector3d total_force(ConstVectorRef x) const;
+    /// ∂(∇E)/∂(A, t) at x, the body placed by x = A y + t (PlacedBody, 3D
+    /// only): 12 columns, A(a, b) in column 3a + b and t(a) in column 9 + a,
+    /// rows over all coordinates; what a sensitivity needs when the placement
+    /// is a parameter (the rig's lower teeth, carried by the jaw map). With
+    /// g = ∇φ, H = ∇²φ, y = A⁻¹(x_i − t) at a node inside (δ > 0):
+    ///     ∂(∇_{x_i}E)/∂t_a    = ε(−g_a g + δ H e_a)          (= −∇²_{x_i}E e_a)
+    ///     ∂(∇_{x_i}E)/∂A_ab   = ε(−g_a y_b g + δ(g_a A⁻ᵀe_b + y_b H e_a)).
+    Eigen::MatrixXd placement_gradient_derivatives(ConstVectorRef x) const;
 
 private:
     /// φ and its derivatives at node `node` of x.

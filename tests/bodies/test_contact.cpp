@@ -4,6 +4,7 @@
 // block is solved alike by every strategy that takes inequalities, with no
 // node inside the body; the candidate set is refreshed between solves.
 #include "sinew/bodies/surface_body.hpp"
+#include "sinew/core/input_error.hpp"
 #include "sinew/energies/constraints/body_gaps.hpp"
 #include "sinew/energies/potentials/obstacle_penalty_potential.hpp"
 #include "sinew/energies/potentials/total_potential.hpp"
@@ -22,6 +23,7 @@
 
 #include <Eigen/Geometry>
 
+#include <cmath>
 #include <fstream>
 #include <random>
 
@@ -149,6 +151,71 @@ TEST_CASE("contact penalty and gap constraints pass the shared derivative check 
         check_contact_derivatives(cube, cube_regimes(rng), turned, moved, curvature);
         check_contact_derivatives(l_shape, l_shape_regimes(rng), turned, moved, curvature);
     }
+}
+
+TEST_CASE("the penalty's gradient derivatives in an affine placement match central differences of the gradient")
+{
+    // ∂(∇E)/∂(A, t) (the rig's lower teeth carried by the jaw map, which is a
+    // rotation only at a solution): a ball and the L-shaped prism under a
+    // map that is not a rotation, nodes inside near a face and a reflex edge
+    // and outside (no term).
+    const Eigen::Matrix3d A = (Eigen::Matrix3d() << 1.05, 0.08, -0.03, -0.06, 0.97, 0.04, 0.02, -0.05, 1.02).finished();
+    const Eigen::Vector3d t(0.03, -0.02, 0.01);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> along(0.15, 0.35), off(0.01, 0.06);
+    const std::vector<std::pair<std::shared_ptr<const CollisionBody>, std::vector<Eigen::Vector3d>>> cases{
+        {analytic_body(SphereObstacle{Eigen::Vector3d(0.1, 0.2, 0.3), 0.5}, 3),
+         {{0.3, 0.2, 0.5}, {0.1, -0.15, 0.35}, {0.1, 0.2, 0.9}}},
+        {std::make_shared<const SurfaceBody>(l_shaped_surface(), "L"),
+         {{0.5 - off(rng), 0.5 - off(rng), along(rng)}, {0.2, 0.2, 0.02}, {1.2, 0.3, 0.3}}}};
+    for (const auto& [body, points] : cases) {
+        CAPTURE(body->name());
+        const int n = static_cast<int>(points.size());
+        auto placed = std::make_shared<PlacedBody>(body);
+        Eigen::VectorXd x(3 * n);
+        for (int i = 0; i < n; ++i)
+            x.segment<3>(3 * i) = A * points[static_cast<std::size_t>(i)] + t;
+        auto gradient_at = [&](const Eigen::Matrix3d& map, const Eigen::Vector3d& shift) {
+            placed->set_affine_placement(map, shift);
+            ObstaclePenaltyPotential penalty(3, n, placed, 4e2);
+            Eigen::VectorXd g = Eigen::VectorXd::Zero(x.size());
+            penalty.add_gradient(x, g);
+            return g;
+        };
+        placed->set_affine_placement(A, t);
+        const Eigen::MatrixXd analytic = ObstaclePenaltyPotential(3, n, placed, 4e2).placement_gradient_derivatives(x);
+        REQUIRE(analytic.cwiseAbs().maxCoeff() > 0.0);
+        const double h = 1e-6;
+        for (int column = 0; column < 12; ++column) {
+            CAPTURE(column);
+            Eigen::Matrix3d dA = Eigen::Matrix3d::Zero();
+            Eigen::Vector3d dt = Eigen::Vector3d::Zero();
+            if (column < 9)
+                dA(column / 3, column % 3) = h;
+            else
+                dt[column - 9] = h;
+            const Eigen::VectorXd differenced = (gradient_at(A + dA, t + dt) - gradient_at(A - dA, t - dt)) / (2 * h);
+            CHECK((analytic.col(column) - differenced).cwiseAbs().maxCoeff() <=
+                  1e-6 * std::max(1.0, analytic.cwiseAbs().maxCoeff()));
+        }
+        CHECK(analytic.middleRows(3 * (n - 1), 3).isZero());  // the node outside adds nothing
+    }
+}
+
+TEST_CASE("an affine placement is refused when singular, not finite or of a 2D body")
+{
+    PlacedBody ball(analytic_body(SphereObstacle{Eigen::Vector3d::Zero(), 1.0}, 3));
+    Eigen::Matrix3d singular = Eigen::Matrix3d::Identity();
+    singular(2, 2) = 0.0;
+    CHECK_THROWS_AS(ball.set_affine_placement(singular, Eigen::Vector3d::Zero()), InputError);
+    Eigen::Matrix3d not_finite = Eigen::Matrix3d::Identity();
+    not_finite(0, 1) = std::nan("");
+    CHECK_THROWS_AS(ball.set_affine_placement(not_finite, Eigen::Vector3d::Zero()), InputError);
+    PlacedBody disk(analytic_body(SphereObstacle{Eigen::Vector2d::Zero(), 1.0}, 2));
+    CHECK_THROWS_AS(disk.set_affine_placement(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero()), InputError);
+    // A stretch is accepted: φ is then the ball's distance in the body's frame.
+    ball.set_affine_placement(2.0 * Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
+    CHECK(ball.distance(Eigen::Vector3d(4.0, 0.0, 0.0)).distance == Approx(1.0));
 }
 
 TEST_CASE("a node inside a reflex edge is pushed out through the edge")

@@ -81,6 +81,19 @@ inline RigDefinition slab_rig_pressed_by_ball()
     return definition;
 }
 
+/// The slab pressed by a rigid ball the jaw carries (placed by the jaw map,
+/// as the lower teeth are), 3 mm into its top face at rest: the jaw's turn
+/// in moved_parameters(8) lifts it about 2 mm.
+inline RigDefinition slab_rig_pressed_by_ball_on_jaw()
+{
+    RigDefinition definition = slab_rig_pressed_by_ball();
+    const double radius = 0.02, top = 0.015;
+    const AnalyticObstacle ball = SphereObstacle{Eigen::Vector3d(0.02, 0.015, top + radius - 0.003), radius};
+    definition.jaw_contact = RigContact{analytic_body(ball, 3), definition.contact->stiffness, definition.contact->nodes};
+    definition.contact.reset();
+    return definition;
+}
+
 /// A rig state away from rest: activations inside (0, 1), the jaw turned by
 /// `jaw_degrees` about the x axis through the bottom face's front edge and
 /// moved, the cranium slightly turned and moved.
