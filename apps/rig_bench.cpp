@@ -52,10 +52,11 @@ void print_fit_row(const RigFitOutcome& o, const RigTargets& targets, bool skull
     std::cout << "\n" << std::flush;
 }
 
-nlohmann::json outcome_json(const RigFitOutcome& o, int tets, const RigTargets& targets, bool skull_contact)
+nlohmann::json outcome_json(const RigFitOutcome& o, const RigDefinition& definition, const RigTargets& targets,
+                            bool skull_contact)
 {
     nlohmann::json run = {{"suite", "rig"},
-            {"tets", tets},
+            {"tets", definition.mesh.num_elements()},
             {"skull_contact", skull_contact},
             {"noise_m", targets.noise},
             {"strategy", o.strategy},
@@ -75,6 +76,13 @@ nlohmann::json outcome_json(const RigFitOutcome& o, int tets, const RigTargets& 
             {"sensitivities_s", number(o.sensitivity_seconds)},
             {"time_s", number(o.seconds)},
             {"branch_distance_m", number(o.branch_distance)},
+            {"branch_node", o.branch_node},
+            {"branch_node_rest_m", o.branch_node < 0 ? nlohmann::json(nullptr)
+                                                     : nlohmann::json(std::vector<double>{
+                                                           definition.mesh.nodes(0, o.branch_node),
+                                                           definition.mesh.nodes(1, o.branch_node),
+                                                           definition.mesh.nodes(2, o.branch_node)})},
+            {"branch_nodes_apart", o.branch_nodes_apart},
             {"result", to_json(o.result)}};
     if (skull_contact)
         run["contact"] = {{"max_penetration_m", number(o.max_penetration)}, {"force_n", number(o.contact_force)}};
@@ -168,7 +176,7 @@ bool run_rig_bench(const std::vector<int>& sizes, const std::vector<std::string>
                     continue;
                 const RigFitOutcome outcome = run_rig_fit(definition, fit_case.inner, targets, strategy, {});
                 print_fit_row(outcome, targets, skull_contact);
-                runs.push_back(outcome_json(outcome, definition.mesh.num_elements(), targets, skull_contact));
+                runs.push_back(outcome_json(outcome, definition, targets, skull_contact));
                 all_converged = all_converged && outcome.result.status == Status::converged;
             }
             if (noise == 0.0)

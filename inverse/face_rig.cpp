@@ -44,9 +44,11 @@ RigDefinition face_rig(const FaceMesh& face, const FaceMaterials& materials, boo
     if (skull_contact) {
         const double mu = 2.0 * (materials.A + materials.B);
         // ε = factor · μ h̄ (seed 000 §5.7: a force scaled by depth, f = ε δ ∇φ).
-        rig.contact = RigContact{std::make_shared<SurfaceBody>(face.skull, "skull"),
-                                 materials.skull_stiffness_factor * mu * mean_edge_length(face.mesh),
+        const double stiffness = materials.skull_stiffness_factor * mu * mean_edge_length(face.mesh);
+        rig.contact = RigContact{std::make_shared<SurfaceBody>(face.maxilla, "maxilla"), stiffness,
                                  face.skull_contact_nodes};
+        rig.jaw_contact = RigContact{std::make_shared<SurfaceBody>(face.mandible, "mandible"), stiffness,
+                                     face.skull_contact_nodes};
     }
     return rig;
 }

@@ -24,7 +24,8 @@ struct FaceMaterials {
 
 /// The rig of `face`: group 0 (tissue) without fibers, one muscle per muscle
 /// group with its elements, the face's cranium and jaw nodes and landmarks;
-/// with `skull_contact`, its skull as a collision body (SurfaceBody, CGAL)
+/// with `skull_contact`, its maxilla as a collision body in the cranium
+/// frame and its mandible as one the jaw carries (SurfaceBody, CGAL), both
 /// for the face's skull contact nodes.
 RigDefinition face_rig(const FaceMesh& face, const FaceMaterials& materials = {}, bool skull_contact = false);
 

@@ -107,17 +107,25 @@ Result fit(Nlp& nlp, RigFitProblem& affine,
     return result;
 }
 
-/// max_i |x̂_i − x̂_rest,i| at θ, `rig` solved at θ by the fit's warm starts
-/// and a fresh rig of the same definition from rest; ∞ when either fails.
-double branch_distance(MuscleRig& rig, const RigParameters& theta)
+/// The branch check at θ: `rig` solved at θ by the fit's warm starts and a
+/// fresh rig of the same definition from rest; max_i |x̂_i − x̂_rest,i|, the
+/// node where it is largest and how many nodes are apart by more than half
+/// of it. Distance ∞ when either solve fails.
+void check_branch(MuscleRig& rig, const RigParameters& theta, RigFitOutcome& outcome)
 {
+    outcome.branch_distance = std::numeric_limits<double>::infinity();
     const RigEvaluation warm = rig.evaluate(theta);
     MuscleRig fresh(rig.definition(), rig.settings());
     const RigEvaluation cold = fresh.evaluate(theta);
     if (!warm.ok || !cold.ok)
-        return std::numeric_limits<double>::infinity();
+        return;
     const Eigen::VectorXd difference = rig.positions() - fresh.positions();
-    return Eigen::Map<const Eigen::Matrix3Xd>(difference.data(), 3, difference.size() / 3).colwise().norm().maxCoeff();
+    const Eigen::VectorXd apart =
+        Eigen::Map<const Eigen::Matrix3Xd>(difference.data(), 3, difference.size() / 3).colwise().norm().transpose();
+    Eigen::Index node = 0;
+    outcome.branch_distance = apart.maxCoeff(&node);
+    outcome.branch_node = static_cast<int>(node);
+    outcome.branch_nodes_apart = static_cast<int>((apart.array() > 0.5 * outcome.branch_distance).count());
 }
 
 } // namespace
@@ -168,7 +176,7 @@ RigFitOutcome run_rig_fit(const RigDefinition& definition, const EquilibriumSolv
         outcome.rms_to_exact = std::sqrt((fitted_landmarks - targets.exact).squaredNorm() / landmarks);
         outcome.max_penetration = rig.max_penetration();
         outcome.contact_force = rig.contact_force().norm();
-        outcome.branch_distance = branch_distance(rig, fitted);
+        check_branch(rig, fitted, outcome);
     } else {
         outcome.rms = outcome.rms_to_exact = std::numeric_limits<double>::infinity();
         outcome.branch_distance = std::numeric_limits<double>::infinity();

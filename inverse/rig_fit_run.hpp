@@ -82,6 +82,11 @@ struct RigFitOutcome {
     /// the fit followed the tissue into another of its equilibria; infinite
     /// where either solve fails.
     double branch_distance = 0.0;
+    /// Where: the node farthest apart (−1 where not checked), and how many
+    /// nodes are apart by more than half branch_distance (a few: a local
+    /// snap, such as a lip caught at a tooth; many: the tissue as a whole).
+    int branch_node = -1;
+    int branch_nodes_apart = 0;
     /// With contact: the deepest node in the body (m) and |force| of the body
     /// on the tissue (N) at the fitted θ.
     double max_penetration = 0.0;

@@ -53,6 +53,9 @@ struct FaceGeometry {
     double cranium_bottom() const { return shape.mouth_y + 0.02; }
     double jaw_top() const { return shape.mouth_y - 0.012; }
     static constexpr double jaw_half_width() { return 0.05; }
+    /// The gap between the upper and lower teeth at rest, centred on the
+    /// mouth's centre line y = mouth_y (m).
+    static constexpr double bite_gap() { return 0.002; }
     bool inside_mouth(double x, double y, double margin = 0.0) const
     {
         const double u = x / (shape.mouth_half_width + margin), v = (y - shape.mouth_y) / (shape.mouth_half_height + margin);

@@ -339,7 +339,9 @@ FaceMesh generate_face(const FaceShape& shape)
             throw InputError(std::string(kSource) + ": TetGen moved surface node " + std::to_string(n));
     assign_muscles(g, face);
     select_nodes(g, layer_of, layers, face);
-    face.skull = face_skull(g, 0.5 * spacing);
+    face.skull = face_skull(g, 0.5 * spacing, FaceBone::skull);
+    face.maxilla = face_skull(g, 0.5 * spacing, FaceBone::maxilla);
+    face.mandible = face_skull(g, 0.5 * spacing, FaceBone::mandible);
     name_node_sets(face);
     face.hinge_point = Eigen::Vector3d(0.0, shape.mouth_y + 0.04, -0.02);
     return face;

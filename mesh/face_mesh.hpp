@@ -39,11 +39,15 @@ struct FaceMesh {
     std::vector<int> jaw_nodes;
     /// Outer-surface nodes the fit sees (one per landmark, distinct).
     std::vector<int> landmarks;
-    /// The maxilla and upper teeth under the lips and cheeks (face_skull), a
-    /// closed triangle surface in the cranium frame, and the nodes that can
-    /// touch it: the tissue's surface nodes below the outer surface (its
-    /// inner surface, the rim's and the mouth's walls) attached to no bone.
+    /// The bone under the lips and cheeks (face_skull), closed triangle
+    /// surfaces: both jaws at rest as one block, and apart, the maxilla (in
+    /// the cranium frame) and the mandible (in the jaw frame, at rest). The
+    /// nodes that can touch them: the tissue's surface nodes below the outer
+    /// surface (its inner surface, the rim's and the mouth's walls) attached
+    /// to no bone.
     Mesh skull;
+    Mesh maxilla;
+    Mesh mandible;
     std::vector<int> skull_contact_nodes;
     /// A point on the jaw's hinge axis, which runs along x (m).
     Eigen::Vector3d hinge_point = Eigen::Vector3d::Zero();

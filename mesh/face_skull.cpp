@@ -41,13 +41,30 @@ struct SkullBlock {
     }
 };
 
+/// The band of heights [y_lo, y_hi] the bone's block spans.
+std::array<double, 2> band(const FaceGeometry& g, FaceBone bone)
+{
+    const double bottom = g.jaw_top(), top = g.cranium_bottom() + kAboveCranium;
+    const double half_bite = 0.5 * g.bite_gap();
+    switch (bone) {
+    case FaceBone::maxilla:
+        return {g.shape.mouth_y + half_bite, top};
+    case FaceBone::mandible:
+        return {bottom, g.shape.mouth_y - half_bite};
+    case FaceBone::skull:
+        break;
+    }
+    return {bottom, top};
+}
+
 } // namespace
 
-Mesh face_skull(const FaceGeometry& g, double spacing)
+Mesh face_skull(const FaceGeometry& g, double spacing, FaceBone bone)
 {
     SkullBlock block{g};
-    block.y_lo = g.jaw_top();
-    block.y_hi = g.cranium_bottom() + kAboveCranium;
+    const auto [y_lo, y_hi] = band(g, bone);
+    block.y_lo = y_lo;
+    block.y_hi = y_hi;
     const double width = 2.0 * kWidthFraction * std::max(g.half_width(block.y_lo), g.half_width(block.y_hi));
     block.nx = std::max(4, static_cast<int>(std::ceil(width / spacing)));
     block.ny = std::max(2, static_cast<int>(std::ceil((block.y_hi - block.y_lo) / spacing)));

@@ -188,6 +188,7 @@ TEST_CASE("rig fit run: kkt-newton recovers theta* with and without a ball press
         CHECK(outcome.rms <= 1e-9);
         // The fit's warm-started equilibrium is the one solved from rest.
         CHECK(outcome.branch_distance <= 1e-9);
+        CHECK(outcome.branch_node >= 0);
         if (pressed) {
             CHECK(outcome.max_penetration > 0.0);
             CHECK(outcome.max_penetration < 1e-4);

@@ -1,6 +1,7 @@
 #include "sinew/bodies/surface_body.hpp"
 #include "sinew/core/input_error.hpp"
 #include "sinew/mesh/element_geometry.hpp"
+#include "sinew/mesh/face_geometry.hpp"
 #include "sinew/mesh/face_mesh.hpp"
 #include "sinew/mesh/mesh_validation.hpp"
 
@@ -70,43 +71,68 @@ TEST_CASE("face generator: a valid shell of about the asked size with muscles, a
     }
 }
 
-TEST_CASE("face generator: the skull lies the gap below the free tissue, which touches it nowhere at rest",
-          "[mesh][face][contact]")
+namespace {
+
+/// Checks that the nodes that can touch `bone` lie outside it, and that
+/// those of the inner surface over its top see it shape.skull_gap below
+/// along z; returns how many did.
+int check_tissue_over_bone(const FaceMesh& face, const FaceShape& shape, const SurfaceBody& bone)
 {
-    FaceShape shape;
-    shape.target_tets = 4000;
-    shape.skull_gap = 0.001;
-    const FaceMesh face = generate_face(shape);
-    // A closed, oriented, self-intersection-free surface: SurfaceBody refuses anything else.
-    const SurfaceBody skull(face.skull, "skull");
-    std::set<int> attached(face.cranium_nodes.begin(), face.cranium_nodes.end());
-    attached.insert(face.jaw_nodes.begin(), face.jaw_nodes.end());
-    REQUIRE(face.skull_contact_nodes.size() > 50);
-    int over_the_skull = 0;
+    int over_the_bone = 0;
     for (const int n : face.skull_contact_nodes) {
         CAPTURE(n);
-        CHECK(attached.count(n) == 0);
         const Eigen::Vector3d X = face.mesh.nodes.col(n);
-        const SurfaceDistance d = skull.query(X);
+        const SurfaceDistance d = bone.query(X);
         CHECK(d.distance > 0.0);
-        // A node of the inner surface over the skull's top sees it the gap
+        // A node of the inner surface over the bone's top sees it the gap
         // below along z: at the distance gap·n_z along the top's normal n,
         // plus the facets' sag (cells of half the tets' spacing; the top is a
         // dome, its chords lie below it, so the sag only widens the gap).
         const double inner_z =
             shape.c * std::sqrt(1.0 - std::pow(X.x() / shape.a, 2) - std::pow(X.y() / shape.b, 2)) - shape.thickness;
         const bool inner = std::abs(X.z() - inner_z) < 1e-9;
-        if (inner && d.feature == SurfaceFeature::face && d.gradient.z() > 0.5 && X.y() > skull.lower().y() &&
-            X.y() < skull.upper().y()) {
-            ++over_the_skull;
+        if (inner && d.feature == SurfaceFeature::face && d.gradient.z() > 0.5 && X.y() > bone.lower().y() &&
+            X.y() < bone.upper().y()) {
+            ++over_the_bone;
             CHECK(d.distance >= 0.95 * shape.skull_gap * d.gradient.z());
             CHECK(d.distance <= shape.skull_gap * d.gradient.z() + 0.15 * shape.skull_gap);
         }
     }
-    CHECK(over_the_skull > 20);
-    // The cranium's attachment is above the skull's top too: bone under tissue, not in it.
-    for (const int n : face.cranium_nodes)
+    return over_the_bone;
+}
+
+} // namespace
+
+TEST_CASE("face generator: the skull, maxilla and mandible lie the gap below the free tissue, which touches them "
+          "nowhere at rest",
+          "[mesh][face][contact]")
+{
+    FaceShape shape;
+    shape.target_tets = 4000;
+    shape.skull_gap = 0.001;
+    const FaceMesh face = generate_face(shape);
+    // Closed, oriented, self-intersection-free surfaces: SurfaceBody refuses anything else.
+    const SurfaceBody skull(face.skull, "skull"), maxilla(face.maxilla, "maxilla"), mandible(face.mandible, "mandible");
+    std::set<int> attached(face.cranium_nodes.begin(), face.cranium_nodes.end());
+    attached.insert(face.jaw_nodes.begin(), face.jaw_nodes.end());
+    REQUIRE(face.skull_contact_nodes.size() > 50);
+    for (const int n : face.skull_contact_nodes)
+        CHECK(attached.count(n) == 0);
+    CHECK(check_tissue_over_bone(face, shape, skull) > 20);
+    CHECK(check_tissue_over_bone(face, shape, maxilla) > 10);
+    CHECK(check_tissue_over_bone(face, shape, mandible) > 10);
+    // The jaws split the skull's band at the mouth, the bite gap apart.
+    CHECK(maxilla.upper().y() == Approx(skull.upper().y()));
+    CHECK(mandible.lower().y() == Approx(skull.lower().y()));
+    CHECK(maxilla.lower().y() - mandible.upper().y() == Approx(FaceGeometry::bite_gap()));
+    CHECK(0.5 * (maxilla.lower().y() + mandible.upper().y()) == Approx(shape.mouth_y));
+    // Each attachment is above its bone's top too: bone under tissue, not in it.
+    for (const int n : face.cranium_nodes) {
         CHECK(skull.query(face.mesh.nodes.col(n)).distance > 0.0);
+        CHECK(maxilla.query(face.mesh.nodes.col(n)).distance > 0.0);
+    }
+    for (const int n : face.jaw_nodes)
+        CHECK(mandible.query(face.mesh.nodes.col(n)).distance > 0.0);
 }
 
 TEST_CASE("face generator: shapes out of range are refused", "[mesh][face][errors]")
