@@ -54,6 +54,21 @@ struct BSplineStencil {
         return g;
     }
 
+    /// ΔN_i = Σ_a ∂²N/∂x_a² Π_{b≠a} N at the node base + offset: the
+    /// Laplacian of w_ip in x_p (seed 004 Alg. 4, line 5).
+    double laplacian(const Index& offset) const
+    {
+        double sum = 0.0;
+        for (int a = 0; a < Dim; ++a) {
+            double term = ddN[a][offset[a]];
+            for (int b = 0; b < Dim; ++b)
+                if (b != a)
+                    term *= N[b][offset[b]];
+            sum += term;
+        }
+        return sum;
+    }
+
     /// Calls f(offset) for every node of the stencil, the last axis fastest.
     template <typename Function>
     void for_each_offset(Function&& f) const

@@ -1,5 +1,6 @@
 #pragma once
 #include "sinew/energies/models/constitutive_model.hpp"
+#include "sinew/mpm/damage/phase_field_point.hpp"
 
 #include <Eigen/Core>
 
@@ -27,10 +28,14 @@ struct Particles {
     std::vector<Matrix> C;
     std::vector<int> material;                 ///< index into the run's models
     std::vector<MaterialPoint<Dim>> point;    ///< fiber director, activation, damage
+    /// AnisoMPM's phase-field data (mpm/damage): empty when the run has no
+    /// damage evolution, else one per particle.
+    std::vector<PhaseFieldPoint<Dim>> phase_field;
 
     int size() const { return static_cast<int>(x.size()); }
 
-    /// Appends a particle at rest shape (F = I, C = 0) with default material data.
+    /// Appends a particle at rest shape (F = I, C = 0) with default material
+    /// data (and a default phase-field point when the particles carry them).
     void add(const Vector& position, const Vector& velocity, double particle_mass, double rest_volume,
              int material_index = 0)
     {
@@ -42,6 +47,8 @@ struct Particles {
         C.push_back(Matrix::Zero());
         material.push_back(material_index);
         point.emplace_back();
+        if (!phase_field.empty())
+            phase_field.emplace_back();
     }
 
     /// Renumbers the particles: particle k becomes the one that was
@@ -63,6 +70,8 @@ struct Particles {
         permuted(C);
         permuted(material);
         permuted(point);
+        if (!phase_field.empty())
+            permuted(phase_field);
     }
 };
 

@@ -139,3 +139,67 @@ TEST_CASE("B-spline stencil: the transfers' weights-only stencil gives the same 
             CHECK(weights.N == full.N);
         }
 }
+
+namespace {
+
+/// Σ_i ΔN_i = 0, Σ_i ΔN_i (x_i − x_p) = 0 and Σ_i ΔN_i |x_i − x_p|² = 2·Dim:
+/// the splines reproduce quadratics up to a constant (the moments above),
+/// so the Laplacian of Σ_i N_i(x)|x_i − y|² = |x − y|² + σ dx² Dim is 2·Dim.
+template <int Dim>
+void check_laplacian_moments(SplineOrder order)
+{
+    std::mt19937 rng(13);
+    const double dx = 0.29;
+    using Index = Eigen::Matrix<int, Dim, 1>;
+    using Vector = Eigen::Matrix<double, Dim, 1>;
+    for (int trial = 0; trial < 200; ++trial) {
+        const Vector x = random_point<Dim>(rng, -4.0, 4.0);
+        const BSplineStencil<Dim> stencil = bspline_stencil<Dim>(x, dx, order);
+        double sum = 0.0, second = 0.0;
+        Vector first = Vector::Zero();
+        stencil.for_each_offset([&](const Index& offset) {
+            const double laplacian = stencil.laplacian(offset);
+            const Vector d = (stencil.base + offset).template cast<double>() * dx - x;
+            sum += laplacian;
+            first += laplacian * d;
+            second += laplacian * d.squaredNorm();
+        });
+        CAPTURE(trial, x.transpose());
+        CHECK(std::abs(sum) < 1e-10 / (dx * dx));
+        CHECK(first.cwiseAbs().maxCoeff() < 1e-10 / dx);
+        CHECK(second == Approx(2.0 * Dim).epsilon(1e-11));
+    }
+}
+
+} // namespace
+
+TEST_CASE("B-spline stencils: the Laplacian of the weights annihilates constants and lines and gives 2 Dim on squares",
+          "[mpm][damage]")
+{
+    check_laplacian_moments<2>(SplineOrder::quadratic);
+    check_laplacian_moments<3>(SplineOrder::quadratic);
+    check_laplacian_moments<2>(SplineOrder::cubic);
+    check_laplacian_moments<3>(SplineOrder::cubic);
+}
+
+TEST_CASE("B-spline stencils: the Laplacian is the trace of the weights' Hessian by central differences of the gradient",
+          "[mpm][damage]")
+{
+    const Eigen::Vector3d x(0.31, -1.27, 2.05);
+    const double dx = 0.2, h = 1e-6;
+    const BSplineStencil<3> s = bspline_stencil<3>(x, dx, SplineOrder::cubic);
+    s.for_each_offset([&](const Eigen::Vector3i& offset) {
+        const Eigen::Vector3i node = s.base + offset;
+        double trace = 0.0;
+        for (int a = 0; a < 3; ++a) {
+            Eigen::Vector3d step = Eigen::Vector3d::Zero();
+            step[a] = h;
+            auto gradient_at = [&](const Eigen::Vector3d& y) {
+                const BSplineStencil<3> t = bspline_stencil<3>(y, dx, SplineOrder::cubic);
+                return t.gradient(node - t.base)[a];
+            };
+            trace += (gradient_at(x + step) - gradient_at(x - step)) / (2.0 * h);
+        }
+        CHECK(s.laplacian(offset) == Approx(trace).margin(1e-4));
+    });
+}
