@@ -69,6 +69,13 @@ Fiber<Dim> make_fiber(double k, const Vec<Dim>& a, const Mat<Dim>& F)
     return fiber;
 }
 
+/// g(d) = (1 − d)²(1 − r) + r (seed 004 §3.6, with AnisoMPM's residual
+/// stiffness r: g(0) = 1, g(1) = r; r = 0 is the seed's (1 − d)²).
+double degradation(double d, double residual)
+{
+    return (1.0 - d) * (1.0 - d) * (1.0 - residual) + residual;
+}
+
 /// The damage d of a material point; InputError outside [0, 1].
 double checked_damage(double d)
 {
@@ -92,13 +99,14 @@ struct PlaneState {
     Fiber<2> fiber;      ///< kx along a₀
 };
 
-PlaneState make_plane_state(const Mat<2>& F, const MaterialPoint<2>& point, double mu, double lambda, double kx)
+PlaneState make_plane_state(const Mat<2>& F, const MaterialPoint<2>& point, double mu, double lambda, double kx,
+                            double residual)
 {
     const double d = checked_damage(point.damage);
     PlaneState st;
     st.cof << F(1, 1), -F(1, 0), -F(0, 1), F(0, 0);
     st.J = F.col(0).dot(st.cof.col(0));
-    const double g = (1.0 - d) * (1.0 - d);      // g(d) = (1 − d)², §3.6
+    const double g = degradation(d, residual);   // g(d), §3.6
     st.alpha = g * mu;                           // g Ψ^μ
     st.beta = (st.J >= 1.0 ? g : 1.0) * lambda;  // Ψ⁺ holds Ψ^λ for J ≥ 1, Ψ⁻ for J < 1
     st.c = st.beta * (st.J - 1.0) - st.alpha;
@@ -205,7 +213,7 @@ void add_fiber_product(const L& coefficient, const Vector3<L>& a, const L& m_I, 
 
 /// The model's coefficients (Pa).
 struct VolumeCoefficients {
-    double mu, lambda, kx, ky;
+    double mu, lambda, kx, ky, residual;
 };
 
 /// ψ, P and ∂P/∂F (each may be skipped by a null pointer) of F[k] for
@@ -238,7 +246,7 @@ void evaluate_volume_batch(const VolumeCoefficients& coefficients, int count, co
         for (int k = 0; k < lanes; ++k) {
             const MaterialPoint<3>& point = points[first + k];
             const double d = checked_damage(point.damage);
-            g.set_lane(k, (1.0 - d) * (1.0 - d));  // g(d) = (1 − d)², §3.6
+            g.set_lane(k, degradation(d, coefficients.residual));  // g(d), §3.6
             // The ky term needs the frame's second axis b₂, the kx term a₀ alone.
             const Mat<3> B = second_fiber ? QrAnisotropic<3>::material_frame(point.fiber) : Mat<3>::Zero();
             const Vec<3> a = second_fiber ? Vec<3>(B.col(0)) : unit_fiber<3>(point.fiber);
@@ -362,6 +370,11 @@ std::vector<ParameterSpec> QrAnisotropic<Dim>::parameter_specs()
         pascal_parameter("ky", 0.0, false,
                          "3D only (0 in 2D): multiplies (1/2)(sqrt(r12^2 + r22^2) - 1)^2 = (1/2)(|F b2| - 1)^2, "
                          "b2 the material frame's second axis"),
+        // {name, default, unit, description, lower, upper, lower_exclusive, choices}
+        ParameterSpec{"residual", 0.0, "1",
+                      "residual stiffness r of the degradation g(d) = (1 - d)^2 (1 - r) + r: the share of the tension "
+                      "part a fully damaged point keeps (AnisoMPM; 0 is seed 004 §3.6's g)",
+                      0.0, 1.0, false, {}},
     };
 }
 
@@ -373,6 +386,7 @@ QrAnisotropic<Dim>::QrAnisotropic(const ParameterValues& values)
     lambda_ = p.at("lambda");
     kx_ = p.at("kx");
     ky_ = p.at("ky");
+    residual_ = p.at("residual");
     std::ostringstream out;
     out << "model " << kName << ": ";
     if (Dim == 3 && !(lambda_ > mu_ / 3.0)) {
@@ -432,10 +446,10 @@ void QrAnisotropic<Dim>::evaluate_batch(int count, const Deformation* F, const P
                                         Stiffness* dPdF, Projection projection) const
 {
     if constexpr (Dim == 3) {
-        evaluate_volume_batch({mu_, lambda_, kx_, ky_}, count, F, points, psi, P, dPdF, projection);
+        evaluate_volume_batch({mu_, lambda_, kx_, ky_, residual_}, count, F, points, psi, P, dPdF, projection);
     } else {
         for (int k = 0; k < count; ++k) {
-            const PlaneState st = make_plane_state(F[k], points[k], mu_, lambda_, kx_);
+            const PlaneState st = make_plane_state(F[k], points[k], mu_, lambda_, kx_, residual_);
             if (P)
                 P[k] = plane_stress(st, F[k]);
             if (dPdF) {

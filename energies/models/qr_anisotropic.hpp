@@ -14,7 +14,9 @@ namespace sinew {
 /// The seed writes ψ on R of F̃ = F B = Q R, B = [a₀ b₂ (b₃)] the material frame
 /// (material_frame, a rotation with B e₁ = a₀), in the sign convention of §3.1
 /// (rotation_qr.hpp: r₁₁, r₂₂ ≥ 0 and det Q = +1, so J = Π rᵢᵢ = det F). With
-/// n = Dim and the degradation g = (1 − d)² of §3.6:
+/// n = Dim and the degradation g(d) = (1 − d)²(1 − r) + r (§3.6's (1 − d)² when
+/// the residual stiffness r is 0, its default; AnisoMPM keeps r > 0 so that a
+/// fully damaged point, g(1) = r, is not left without shear stiffness):
 ///
 ///     ψ = g Ψ^μ + g_λ Ψ^λ + Ψ^f,     g_λ = g for J ≥ 1, 1 for J < 1
 ///     Ψ^μ = μ/2 (Σᵢⱼ rᵢⱼ² − n) − μ (J − 1)
@@ -45,7 +47,8 @@ public:
 
     static constexpr const char* kName = "qr-anisotropic";
 
-    /// mu (> 0), lambda (> 0), kx (≥ 0), ky (≥ 0), all in Pa; one list for
+    /// mu (> 0), lambda (> 0), kx (≥ 0), ky (≥ 0), all in Pa, and residual
+    /// r ∈ [0, 1] (the degradation's, dimensionless); one list for
     /// 2D and 3D. The constructor adds λ > μ/3 in 3D and ky = 0 in 2D (the
     /// seed's 2D energy has no ky term), InputError naming the parameter.
     static std::vector<ParameterSpec> parameter_specs();
@@ -85,6 +88,7 @@ private:
     double lambda_;  ///< λ, Pa: the seed's coefficient of (J − 1)²/2 (not Lamé's λ)
     double kx_;      ///< kx, Pa: fiber stiffness along a₀
     double ky_;      ///< ky, Pa: stiffness along b₂ (3D; 0 in 2D)
+    double residual_;  ///< r: g(1), the tension part's share left at full damage
 };
 
 using QrAnisotropic2d = QrAnisotropic<2>;

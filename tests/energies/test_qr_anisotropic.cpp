@@ -53,15 +53,21 @@ using Dim3 = std::integral_constant<int, 3>;
 constexpr int kSamplesPerRegime = 1000;
 
 struct Parameters {
-    double mu = 1e4, lambda = 1e5, kx = 1e5, ky = 0.0;
+    double mu = 1e4, lambda = 1e5, kx = 1e5, ky = 0.0, residual = 0.0;
 
-    ParameterValues values() const { return {{"mu", mu}, {"lambda", lambda}, {"kx", kx}, {"ky", ky}}; }
+    ParameterValues values() const
+    {
+        return {{"mu", mu}, {"lambda", lambda}, {"kx", kx}, {"ky", ky}, {"residual", residual}};
+    }
+    /// g(d) = (1 − d)²(1 − r) + r (seed 004 §3.6 with the residual r).
+    double degradation(double d) const { return (1.0 - d) * (1.0 - d) * (1.0 - residual) + residual; }
     /// Sum of the moduli: the stress and stiffness scale of the model.
     double scale() const { return mu + lambda + kx + ky; }
 };
 
 /// μ log-uniform in [1e3, 1e6] Pa; λ/μ in [0.4, 50] (3D needs λ > μ/3) or
-/// [0.05, 50] (2D); kx/μ and (3D) ky/μ in [0, 20].
+/// [0.05, 50] (2D); kx/μ and (3D) ky/μ in [0, 20]; the residual r = 0 (the
+/// seed's g) half the time, else uniform in [0, 1].
 template <int Dim>
 Parameters random_parameters(std::mt19937& rng)
 {
@@ -71,6 +77,7 @@ Parameters random_parameters(std::mt19937& rng)
     p.lambda = p.mu * ((Dim == 3 ? 0.4 : 0.05) + 49.6 * u01(rng));
     p.kx = p.mu * 20.0 * u01(rng);
     p.ky = Dim == 3 ? p.mu * 20.0 * u01(rng) : 0.0;
+    p.residual = u01(rng) < 0.5 ? 0.0 : u01(rng);
     return p;
 }
 
@@ -115,14 +122,14 @@ double stiffness_rounding(const Parameters& p, const Mat<Dim>& F, double largest
 }
 
 /// The coefficients of the degraded energy (seed 004 §3.6): g μ on the shear
-/// terms always, g λ on the volume term for J ≥ 1 and λ for J < 1, g = (1 − d)².
+/// terms always, g λ on the volume term for J ≥ 1 and λ for J < 1, g = (1 − d)²(1 − r) + r.
 struct Degraded {
     double alpha, beta;
 };
 
 Degraded degrade(const Parameters& p, double d, double J)
 {
-    const double g = (1.0 - d) * (1.0 - d);
+    const double g = p.degradation(d);
     return {g * p.mu, (J >= 1.0 ? g : 1.0) * p.lambda};
 }
 
@@ -433,7 +440,7 @@ TEMPLATE_TEST_CASE("qr anisotropic: the seed's QR route gives the same psi, P an
             const double J = reference.R.diagonal().prod();
             const Degraded c = degrade(p, point.damage, J);
             const SeedParts parts = seed_parts<Dim>(reference.R, p);
-            const double g = (1.0 - point.damage) * (1.0 - point.damage);
+            const double g = p.degradation(point.damage);
             const double psi_seed = g * parts.shear + c.beta / p.lambda * parts.volume + parts.fiber;
             Mat<Dim> P;
             Stiffness<Dim> H;
@@ -663,7 +670,7 @@ TEMPLATE_TEST_CASE("qr anisotropic: rest state is stress free, the tangent is li
         model.evaluate(Mat<Dim>::Identity(), point, nullptr, &H_clamped, Projection::clamp);
         const Mat<Dim> B = QrAnisotropic<Dim>::material_frame(point.fiber);
         const Vec<Dim> a = B.col(0), b = B.col(1);
-        const double g = (1.0 - point.damage) * (1.0 - point.damage);
+        const double g = p.degradation(point.damage);
         const double ky = Dim == 3 ? p.ky : 0.0;
         Stiffness<Dim> C;
         for (int i = 0; i < Dim; ++i)
@@ -716,7 +723,7 @@ TEMPLATE_TEST_CASE("qr anisotropic: uniaxial stretch along the fiber matches the
     // full modulus, across it the lateral stress of the volume term.
     constexpr int Dim = TestType::value;
     std::mt19937 rng(490 + Dim);
-    const Parameters p{2e4, 9e4, 3e5, Dim == 3 ? 5e4 : 0.0};
+    const Parameters p{2e4, 9e4, 3e5, Dim == 3 ? 5e4 : 0.0, 0.1};
     const QrAnisotropic<Dim> model = make_model<Dim>(p);
     for (const double damage : {0.0, 0.3, 1.0}) {
         for (const double t : {0.1, 0.5, 0.9, 1.0, 1.1, 2.0, 4.0}) {
@@ -726,7 +733,7 @@ TEMPLATE_TEST_CASE("qr anisotropic: uniaxial stretch along the fiber matches the
             const Vec<Dim> a = point.fiber;
             const Mat<Dim> along = a * a.transpose();
             const Mat<Dim> F = Mat<Dim>::Identity() + (t - 1.0) * along;
-            const double g = (1.0 - damage) * (1.0 - damage);
+            const double g = p.degradation(damage);
             const double beta = (t >= 1.0 ? g : 1.0) * p.lambda;
             const double modulus = g * p.mu + beta + p.kx;
             const double psi_expected = 0.5 * modulus * (t - 1.0) * (t - 1.0);
@@ -746,11 +753,11 @@ TEMPLATE_TEST_CASE("qr anisotropic: uniaxial stretch along the fiber matches the
 TEMPLATE_TEST_CASE("qr anisotropic: damage degrades the tension part only, never the fibers",
                    "[energies][qr-anisotropic]", Dim2, Dim3)
 {
-    // Seed §3.6: ψ = g(d) Ψ⁺ + Ψ⁻ + Ψ^f, g = (1 − d)², Ψ⁺ = Ψ^μ + Ψ^λ for J ≥ 1 and
+    // Seed §3.6: ψ = g(d) Ψ⁺ + Ψ⁻ + Ψ^f, g = (1 − d)²(1 − r) + r, Ψ⁺ = Ψ^μ + Ψ^λ for J ≥ 1 and
     // Ψ^μ for J < 1, Ψ⁻ = Ψ^λ for J < 1 (0 for J ≥ 1). Checked against the seed
     // parts on the seed's QR, and: d = 0 is the undamaged energy; the fiber part
     // (ψ minus the same model with kx = ky = 0) does not depend on d, its P and
-    // ∂P/∂F are the closed-form fiber ones; d = 1 leaves Ψ⁻ + Ψ^f.
+    // ∂P/∂F are the closed-form fiber ones; d = 1 leaves r Ψ⁺ + Ψ⁻ + Ψ^f.
     constexpr int Dim = TestType::value;
     std::mt19937 rng(500 + Dim);
     for (const auto regime : all_regimes()) {
@@ -772,7 +779,7 @@ TEMPLATE_TEST_CASE("qr anisotropic: damage degrades the tension part only, never
             const FiberReference<Dim> fiber = fiber_reference<Dim>(F, point, p);
             for (const double d : {point.damage, 0.0, 1.0}) {
                 point.damage = d;
-                const double g = (1.0 - d) * (1.0 - d);
+                const double g = p.degradation(d);
                 CAPTURE(d);
                 Mat<Dim> P, P_isotropic;
                 Stiffness<Dim> H, H_isotropic;
@@ -781,8 +788,8 @@ TEMPLATE_TEST_CASE("qr anisotropic: damage degrades the tension part only, never
                 CHECK(std::abs(psi - (g * tension + compression + parts.fiber)) <= 1e-12 * energy_scale);
                 if (d == 0.0)
                     CHECK(std::abs(psi - (parts.shear + parts.volume + parts.fiber)) <= 1e-12 * energy_scale);
-                if (d == 1.0)
-                    CHECK(std::abs(psi - (compression + parts.fiber)) <= 1e-12 * energy_scale);
+                if (d == 1.0)  // g(1) = r: the residual share of the tension part
+                    CHECK(std::abs(psi - (p.residual * tension + compression + parts.fiber)) <= 1e-12 * energy_scale);
                 CHECK(std::abs((psi - psi_isotropic) - fiber.psi) <= 1e-12 * energy_scale);
                 CHECK((P - P_isotropic - fiber.P).cwiseAbs().maxCoeff() <= stress_rounding<Dim>(p, F));
                 CHECK((H - H_isotropic - fiber.H).cwiseAbs().maxCoeff() <=
@@ -897,13 +904,16 @@ TEMPLATE_TEST_CASE("qr anisotropic: parameters and invalid input", "[energies][q
     constexpr int Dim = TestType::value;
     using Model = QrAnisotropic<Dim>;
     const auto specs = Model::parameter_specs();
-    REQUIRE(specs.size() == 4);
+    REQUIRE(specs.size() == 5);
     CHECK(specs[0].name == "mu");
     CHECK(specs[1].name == "lambda");
     CHECK(specs[2].name == "kx");
     CHECK(specs[3].name == "ky");
-    for (const auto& spec : specs)
-        CHECK(spec.unit == "Pa");
+    CHECK(specs[4].name == "residual");
+    for (size_t i = 0; i < 4; ++i)
+        CHECK(specs[i].unit == "Pa");
+    CHECK(specs[4].unit == "1");
+    CHECK(specs[4].default_value == 0.0);
     CHECK(Model(ParameterValues{}).name() == "qr-anisotropic");
     CHECK(std::string(Model::kName) == "qr-anisotropic");
     // The same list in 2D and 3D, so that one model name serves both shapes.
@@ -927,6 +937,8 @@ TEMPLATE_TEST_CASE("qr anisotropic: parameters and invalid input", "[energies][q
     CHECK(throws_naming({{"kx", -1.0}}, "kx"));
     CHECK(throws_naming({{"ky", -1.0}}, "ky"));
     CHECK(throws_naming({{"nu", 0.3}}, "nu"));
+    CHECK(throws_naming({{"residual", -0.1}}, "residual"));
+    CHECK(throws_naming({{"residual", 1.5}}, "residual"));
     CHECK(throws_naming({{"mu", std::numeric_limits<double>::infinity()}}, "mu"));
     if (Dim == 3) {
         CHECK(throws_naming({{"mu", 3e4}, {"lambda", 1e4}}, "lambda"));  // λ ≤ μ/3: no bulk modulus
