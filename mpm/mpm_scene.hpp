@@ -1,9 +1,11 @@
 #pragma once
 #include "sinew/energies/models/constitutive_model.hpp"
+#include "sinew/mpm/damage/damage_update.hpp"
 #include "sinew/mpm/particles.hpp"
 #include "sinew/mpm/step_settings.hpp"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -49,6 +51,9 @@ struct MpmScene {
     bool substeps = false;
     int frames = 50;  ///< output frames after t = 0, equally spaced in time
     bool grid_output = false;  ///< also the active grid as grid_k.vtu at every frame
+    /// AnisoMPM's damage (scene part "mpm_damage"): when set, the particles
+    /// carry phase-field points and d advances once before every step.
+    std::optional<DamageSettings> damage;
 };
 
 } // namespace sinew

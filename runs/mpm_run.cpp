@@ -8,11 +8,13 @@
 #include "sinew/mesh/vtp_writer.hpp"
 #include "sinew/mpm/active_grid.hpp"
 #include "sinew/mpm/cfl.hpp"
+#include "sinew/mpm/damage/damage_update.hpp"
 #include "sinew/mpm/explicit_step.hpp"
 #include "sinew/mpm/grid_velocity_nlp.hpp"
 #include "sinew/mpm/implicit_step.hpp"
 #include "sinew/mpm/particle_buckets.hpp"
 #include "sinew/mpm/particle_measures.hpp"
+#include "sinew/runs/damage_cg.hpp"
 #include "sinew/runs/output_file.hpp"
 #include "sinew/runs/result_json.hpp"
 #include "sinew/runs/scene_run_settings.hpp"
@@ -51,6 +53,14 @@ MpmFrameRow measure(const MpmSetup<Dim>& setup, const Particles<Dim>& particles,
         row.max_J = p == 0 ? J : std::max(row.max_J, J);
     }
     row.total_energy = row.kinetic_energy + row.elastic_energy + row.gravity_energy;
+    double volume = 0.0;
+    for (int p = 0; p < particles.size(); ++p) {
+        const auto i = static_cast<std::size_t>(p);
+        row.max_damage = std::max(row.max_damage, particles.point[i].damage);
+        row.mean_damage += particles.volume[i] * particles.point[i].damage;
+        volume += particles.volume[i];
+    }
+    row.mean_damage /= volume;  // Σ V⁰ d / Σ V⁰
     row.linear_momentum.head<Dim>() = linear_momentum(particles);
     row.cfl_time_step = cfl_time_step(particles, models, dx, cfl);
     return row;
@@ -89,8 +99,15 @@ VtuArrays particle_arrays(const MpmSetup<Dim>& setup, const Particles<Dim>& part
         material(0, p) = particles.material[i];
         damage(0, p) = particles.point[i].damage;
     }
-    return {{"velocity", velocity}, {"J", J}, {"stress_norm", stress}, {"material", material}, {"fiber", fiber},
-            {"damage", damage}};
+    VtuArrays arrays{{"velocity", velocity}, {"J", J}, {"stress_norm", stress}, {"material", material}, {"fiber", fiber},
+                     {"damage", damage}};
+    if (!particles.phase_field.empty()) {  // D̃ᴴ, the driving force's history
+        Eigen::MatrixXd history(1, count);
+        for (Eigen::Index p = 0; p < count; ++p)
+            history(0, p) = particles.phase_field[static_cast<std::size_t>(p)].history;
+        arrays["damage_history"] = history;
+    }
+    return arrays;
 }
 
 Eigen::MatrixXd positions_of(const std::vector<Eigen::Vector2d>& x)
@@ -109,9 +126,9 @@ Eigen::MatrixXd positions_of(const std::vector<Eigen::Vector3d>& x)
     return out;
 }
 
-nlohmann::json to_json(const MpmFrameRow& row)
+nlohmann::json to_json(const MpmFrameRow& row, bool damage)
 {
-    return {{"frame", row.frame},
+    nlohmann::json out = {{"frame", row.frame},
             {"time", row.time},
             {"steps", row.steps},
             {"kinetic_energy", number(row.kinetic_energy)},
@@ -124,6 +141,16 @@ nlohmann::json to_json(const MpmFrameRow& row)
             {"cfl_time_step", number(row.cfl_time_step)},
             {"iterations", row.iterations},
             {"time_s", row.time_s}};
+    if (damage) {
+        out["damage_s"] = row.damage_s;
+        out["damage_cg_iterations"] = row.damage_cg_iterations;
+        out["damage_grown"] = row.damage_grown;
+        out["damage_capped"] = row.damage_capped;
+        out["damage_decrease_refused"] = row.damage_decrease_refused;
+        out["max_damage"] = number(row.max_damage);
+        out["mean_damage"] = number(row.mean_damage);
+    }
+    return out;
 }
 
 /// The largest diagonal entry of the NLP's Hessian at x.
@@ -178,8 +205,10 @@ class MpmRun {
 public:
     MpmRun(const MpmScene& scene, const SceneRunSettings& settings)
         : scene_(scene), settings_(settings), setup_(std::get<MpmSetup<Dim>>(scene.setup)),
-          particles_(setup_.particles), grid_(scene.dx), solves_{settings, Result{}, 0}
+          particles_(setup_.particles), grid_(scene.dx), solves_{settings, Result{}, 0}, damage_grid_(scene.dx)
     {
+        if (scene.damage)
+            damage_solve_ = damage_cg(scene.damage->cg_tolerance, scene.damage->cg_max_iterations);
         sort_particles_by_block(particles_, scene.dx, setup_.step.transfer.order);  // the run's numbering from frame 0
         for (const GridCollider<Dim>& collider : setup_.step.colliders)
             moving_.push_back(std::make_shared<PlacedBody>(*collider.body));
@@ -193,6 +222,11 @@ public:
             throw InputError("mpm: time_step " + format_number(step_length()) + " s exceeds the explicit CFL bound " +
                              format_number(bound) + " s (cfl " + format_number(scene_.cfl) +
                              "); lower it, set \"substeps\": true, or use \"stepping\": \"implicit\"");
+        const bool sub_stepped = scene_.stepping == MpmStepping::explicit_steps && scene_.substeps;
+        if (!sub_stepped && step_length() > damage_time_step())
+            throw InputError("mpm_damage: time_step " + format_number(step_length()) +
+                             " s exceeds the explicit damage's stability bound " + format_number(damage_time_step()) +
+                             " s (2η/(1 + 4 dim l0²/dx²)); lower it, or use \"integration\": \"implicit\"");
         if (scene_.stepping == MpmStepping::implicit_steps) {
             SparseGrid<Dim> grid(scene_.dx);
             const ParticleBuckets<Dim> layout = particles_to_grid(particles_, setup_.step.transfer, grid);
@@ -215,9 +249,11 @@ public:
             record(frame, taken_, outcome, on_frame, start);
         }
         outcome.steps = sub_steps_;
-        const bool solved = solves_.not_converged == 0;
-        if (outcome.stopped.empty() && !solved)
+        const bool solved = solves_.not_converged == 0 && damage_not_converged_ == 0;
+        if (outcome.stopped.empty() && solves_.not_converged > 0)
             outcome.stopped = std::to_string(solves_.not_converged) + " implicit solves did not converge";
+        if (outcome.stopped.empty() && damage_not_converged_ > 0)
+            outcome.stopped = std::to_string(damage_not_converged_) + " damage solves did not converge";
         outcome.converged = outcome.stopped.empty();
         outcome.run.solver = scene_.stepping == MpmStepping::implicit_steps ? settings_.solver : "explicit";
         outcome.run.problem = "mpm";
@@ -245,6 +281,31 @@ public:
 
 private:
     double step_length() const { return scene_.duration / static_cast<double>(step_count(scene_, setup_.step.time_step)); }
+
+    /// The explicit damage's stability bound on Δt (+∞ without it).
+    double damage_time_step() const
+    {
+        if (!scene_.damage || scene_.damage->integration != DamageIntegration::explicit_damage)
+            return std::numeric_limits<double>::infinity();
+        return explicit_damage_time_step(particles_, scene_.dx);
+    }
+
+    /// One damage update of `dt` before a step (none without "mpm_damage"),
+    /// added to the frame's counts; why the run must end, or "".
+    std::string advance_damage(const std::vector<const ConstitutiveModel<Dim, Dim>*>& models, double dt)
+    {
+        if (!scene_.damage)
+            return {};
+        const auto start = std::chrono::steady_clock::now();
+        const DamageReport report = update_damage(particles_, models, dt, *scene_.damage, damage_grid_, damage_solve_);
+        damage_counts_.damage_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        damage_counts_.damage_cg_iterations += report.cg_iterations;
+        damage_counts_.damage_grown += report.grown;
+        damage_counts_.damage_capped += report.capped_at_one;
+        damage_counts_.damage_decrease_refused += report.decrease_refused;
+        damage_not_converged_ += report.cg_converged ? 0 : 1;
+        return report.failure;
+    }
 
     /// The scene's step settings with Δt = T/N and the run's own colliders,
     /// each placed where its motion has carried it by `time`: a point x₀ of
@@ -275,14 +336,15 @@ private:
         MpmStepSettings<Dim> step = step_settings(time);
         if (scene_.stepping == MpmStepping::implicit_steps) {
             ++sub_steps_;
-            return implicit_step(particles_, models, step, grid_, solves_.solve()).failure;
+            const std::string failure = advance_damage(models, step.time_step);
+            return failure.empty() ? implicit_step(particles_, models, step, grid_, solves_.solve()).failure : failure;
         }
-        const double bound = cfl_time_step(particles_, models, scene_.dx, scene_.cfl);
+        const double bound = std::min(cfl_time_step(particles_, models, scene_.dx, scene_.cfl), damage_time_step());
         int parts = 1;
         if (step.time_step > bound) {
             if (!scene_.substeps)
                 return "step " + std::to_string(taken_ + 1) + ": time_step " + format_number(step.time_step) +
-                       " s exceeds the explicit CFL bound " + format_number(bound) + " s at this state";
+                       " s exceeds the explicit CFL (or explicit damage) bound " + format_number(bound) + " s at this state";
             parts = static_cast<int>(std::min(1e6, std::ceil(step.time_step / bound)));
         }
         const double part = step.time_step / parts;
@@ -290,7 +352,9 @@ private:
             MpmStepSettings<Dim> sub_step = step_settings(time + k * part);
             sub_step.time_step = part;
             ++sub_steps_;
-            const std::string failure = explicit_step(particles_, models, sub_step, grid_).failure;
+            std::string failure = advance_damage(models, part);
+            if (failure.empty())
+                failure = explicit_step(particles_, models, sub_step, grid_).failure;
             if (!failure.empty())
                 return failure;
         }
@@ -304,6 +368,12 @@ private:
         row.frame = frame;
         row.time = scene_.duration * static_cast<double>(steps) / static_cast<double>(step_count(scene_, setup_.step.time_step));
         row.steps = sub_steps_;
+        row.damage_s = damage_counts_.damage_s;
+        row.damage_cg_iterations = damage_counts_.damage_cg_iterations;
+        row.damage_grown = damage_counts_.damage_grown;
+        row.damage_capped = damage_counts_.damage_capped;
+        row.damage_decrease_refused = damage_counts_.damage_decrease_refused;
+        damage_counts_ = MpmFrameRow{};
         row.iterations = solves_.counts.iterations - iterations_recorded_;
         iterations_recorded_ = solves_.counts.iterations;
         row.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -336,7 +406,7 @@ private:
             return;
         nlohmann::json frames = nlohmann::json::array(), files = nlohmann::json::array();
         for (const MpmFrameRow& row : outcome.frames)
-            frames.push_back(to_json(row));
+            frames.push_back(to_json(row, scene_.damage.has_value()));
         for (const PvdEntry& entry : collection_)
             files.push_back(entry.file);
         if (!collection_.empty())
@@ -346,7 +416,7 @@ private:
             grid_files.push_back(entry.file);
         if (!grid_collection_.empty())
             write_pvd(folder_ + "grid.pvd", grid_collection_);
-        const nlohmann::json result = {
+        nlohmann::json result = {
             {"scene", "mpm"},
             {"dimension", Dim},
             {"particles", particles_.size()},
@@ -368,6 +438,19 @@ private:
             {"vtp", files},
             {"grid_vtu", grid_files},
             {"frames", frames}};
+        if (scene_.damage) {
+            const DamageSettings& damage = *scene_.damage;
+            const bool implicit = damage.integration == DamageIntegration::implicit_damage;
+            nlohmann::json summary = {{"integration", implicit ? "implicit" : "explicit"},
+                                      {"solves_not_converged", damage_not_converged_}};
+            if (implicit) {
+                summary["preconditioner"] =
+                    damage.implicit.preconditioner == DamagePreconditioner::lumped ? "lumped" : "full_diagonal";
+                summary["transfer"] = damage.implicit.transfer == DamageTransfer::seed ? "seed" : "increment";
+                summary["cg_tolerance"] = damage.cg_tolerance;
+            }
+            result["damage"] = summary;
+        }
         write_text_file(folder_ + "result.json", result.dump(2) + "\n");
     }
 
@@ -377,6 +460,10 @@ private:
     Particles<Dim> particles_;
     SparseGrid<Dim> grid_;
     ImplicitSolves solves_;
+    DamageGrid<Dim> damage_grid_;
+    DamageLinearSolve damage_solve_;
+    MpmFrameRow damage_counts_;     ///< the damage fields only: since the last frame
+    int damage_not_converged_ = 0;  ///< implicit damage solves that missed their tolerance
     long long taken_ = 0;      ///< steps of the scene's Δt taken
     long long sub_steps_ = 0;  ///< steps taken, sub-steps counted
     int iterations_recorded_ = 0;

@@ -26,6 +26,15 @@ struct MpmFrameRow {
     double cfl_time_step = 0.0;  ///< the explicit bound at this state (cfl · dx / max(c + |v|))
     int iterations = 0;          ///< implicit: solver iterations since the previous frame
     double time_s = 0.0;         ///< wall time since the run started
+    /// Damage (scene part "mpm_damage"), its updates since the previous frame:
+    double damage_s = 0.0;                  ///< their wall time
+    long long damage_cg_iterations = 0;     ///< implicit damage: iterations of the damage solves
+    long long damage_grown = 0;             ///< particle updates that raised d
+    long long damage_capped = 0;            ///< particle updates where min(1, ·) acted
+    long long damage_decrease_refused = 0;  ///< implicit: particle updates the transfer would have lowered
+    /// and the field at the frame:
+    double max_damage = 0.0;
+    double mean_damage = 0.0;  ///< Σ V⁰ d / Σ V⁰
 };
 
 struct MpmRunOutcome {
@@ -54,7 +63,11 @@ void check_mpm_run(const MpmScene& scene, const SceneRunSettings& settings);
 /// An explicit step above the CFL bound (the particles sped up) is split
 /// into sub-steps when the scene allows it, else it ends the run, as does a
 /// step whose stress is not finite; an implicit solve that does not converge
-/// is taken and counted. The output is written either way.
+/// is taken and counted. The output is written either way. With damage
+/// (MpmScene::damage) d advances once before every step, sub-steps
+/// included; explicit damage also bounds the step (explicit_damage_time_step:
+/// sub-steps when the scene allows them, else refused before the run); a
+/// damage solve that does not converge is counted as an implicit solve is.
 MpmRunOutcome run_mpm(const MpmScene& scene, const SceneRunSettings& settings,
                       const std::function<void(const MpmFrameRow&)>& on_frame = {});
 

@@ -12,10 +12,9 @@ DamageReport explicit_damage(Particles<Dim>& particles, const std::vector<const 
 {
     DamageReport report;
     std::vector<double> driving;
-    report.failure = update_driving_forces(particles, models, driving);
+    report.failure = start_damage_update(particles, models, driving, grid);
     if (!report.failure.empty())
         return report;
-    damage_to_grid(particles, grid);
     const std::vector<double> laplacian = damage_laplacians(particles, grid);
     for (std::size_t p = 0; p < particles.point.size(); ++p) {
         const PhaseFieldPoint<Dim>& field = particles.phase_field[p];

@@ -73,10 +73,9 @@ DamageReport implicit_damage(Particles<Dim>& particles, const std::vector<const 
 {
     DamageReport report;
     std::vector<double> driving;
-    report.failure = update_driving_forces(particles, models, driving);
+    report.failure = start_damage_update(particles, models, driving, grid);
     if (!report.failure.empty())
         return report;
-    damage_to_grid(particles, grid);
     const Eigen::VectorXd before = Eigen::Map<const Eigen::VectorXd>(grid.damage.data(), grid.nodes.slots());
     const DamageSystem<Dim> system(particles, driving, dt, grid);
     DamageSolveOutcome outcome;

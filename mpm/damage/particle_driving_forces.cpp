@@ -37,9 +37,24 @@ std::string update_driving_forces(Particles<Dim>& particles, const std::vector<c
     return {};
 }
 
+template <int Dim>
+std::string start_damage_update(Particles<Dim>& particles, const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
+                                std::vector<double>& driving, DamageGrid<Dim>& grid)
+{
+    std::string failure = update_driving_forces(particles, models, driving);
+    if (failure.empty())
+        damage_to_grid(particles, grid);
+    return failure;
+}
+
 template std::string update_driving_forces<2>(Particles<2>&, const std::vector<const ConstitutiveModel<2, 2>*>&,
                                               std::vector<double>&);
 template std::string update_driving_forces<3>(Particles<3>&, const std::vector<const ConstitutiveModel<3, 3>*>&,
                                               std::vector<double>&);
+
+template std::string start_damage_update<2>(Particles<2>&, const std::vector<const ConstitutiveModel<2, 2>*>&,
+                                            std::vector<double>&, DamageGrid<2>&);
+template std::string start_damage_update<3>(Particles<3>&, const std::vector<const ConstitutiveModel<3, 3>*>&,
+                                            std::vector<double>&, DamageGrid<3>&);
 
 } // namespace sinew

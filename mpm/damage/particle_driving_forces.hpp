@@ -2,6 +2,7 @@
 // The driving force of every particle with its history (seed 004 Alg. 5
 // lines 4–11, Alg. 8).
 #include "sinew/energies/models/constitutive_model.hpp"
+#include "sinew/mpm/damage/damage_grid.hpp"
 #include "sinew/mpm/particles.hpp"
 
 #include <string>
@@ -18,5 +19,12 @@ namespace sinew {
 template <int Dim>
 std::string update_driving_forces(Particles<Dim>& particles, const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
                                   std::vector<double>& driving);
+
+/// The start of every damage update, explicit or implicit: D̃_p
+/// (update_driving_forces), then dⁿ to the grid (damage_to_grid). Empty, or
+/// update_driving_forces's failure (the grid is then untouched).
+template <int Dim>
+std::string start_damage_update(Particles<Dim>& particles, const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
+                                std::vector<double>& driving, DamageGrid<Dim>& grid);
 
 } // namespace sinew

@@ -42,8 +42,8 @@ std::string phase_field_point_error(const PhaseFieldPoint<Dim>& point)
         return "sigma_crit must be finite and positive";
     if (!positive(point.eta))
         return "eta must be finite and positive";
-    if (!positive(point.zeta))
-        return "zeta must be finite and positive";
+    if (!(std::isfinite(point.zeta) && point.zeta >= 0.0))
+        return "zeta must be finite and >= 0";
     if (!positive(point.l0))
         return "l0 must be finite and positive";
     if (!(std::isfinite(point.history) && point.history >= 0.0))

@@ -25,7 +25,7 @@ struct PhaseFieldPoint {
     double weight2 = -1.0;
     double sigma_crit = 1.0;  ///< σ_c (Pa): Φ = (Aσ⁺):(σ⁺A)/σ_c²
     double eta = 1.0;         ///< η (s): the damage's viscosity, ηḋ = (1 − d)D̃ − (d − l₀²Δd)
-    double zeta = 1.0;        ///< ζ: the driving force's scale, D̃ = ζ⟨Φ − 1⟩
+    double zeta = 1.0;        ///< ζ: the driving force's scale, D̃ = ζ⟨Φ − 1⟩ (0: never driven)
     double l0 = 1.0;          ///< l₀ (m): the crack's length scale (the seed's default 0.5 dx)
     double history = 0.0;     ///< D̃ᴴ: the largest driving force so far
 };
@@ -33,8 +33,8 @@ struct PhaseFieldPoint {
 /// Empty when `point` is valid; otherwise one line naming the field that is
 /// not (directors finite and of unit length within 1e-9, directors_used 1 or
 /// 2 (1 in 2D: orthotropy needs a third axis), a₂ ⊥ a₁ within 1e-9, weights
-/// finite and ≥ −1, σ_c, η, ζ, l₀ finite and positive, history finite and
-/// ≥ 0).
+/// finite and ≥ −1, σ_c, η, l₀ finite and positive, ζ and history finite
+/// and ≥ 0).
 template <int Dim>
 std::string phase_field_point_error(const PhaseFieldPoint<Dim>& point);
 

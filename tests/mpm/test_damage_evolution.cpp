@@ -5,7 +5,7 @@
 #include "sinew/mpm/damage/driving_force.hpp"
 #include "sinew/mpm/damage/explicit_damage.hpp"
 #include "sinew/mpm/damage/implicit_damage.hpp"
-#include "sinew/solvers/newton/preconditioned_cg.hpp"
+#include "sinew/runs/damage_cg.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -18,19 +18,8 @@ using namespace sinew;
 
 namespace {
 
-/// Jacobi-preconditioned CG (solvers/) to relative residual `tolerance`.
-DamageLinearSolve cg_solve(double tolerance)
-{
-    return [tolerance](const std::function<void(const Eigen::VectorXd&, Eigen::VectorXd&)>& multiply,
-                       const Eigen::VectorXd& diagonal, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
-        const auto jacobi = [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
-            z = r.cwiseQuotient(diagonal);
-            return true;
-        };
-        const CgOutcome outcome = preconditioned_cg(multiply, jacobi, b, tolerance, 100000, x);
-        return DamageSolveOutcome{outcome.status == CgStatus::converged, outcome.iterations, outcome.relative_residual};
-    };
-}
+/// Jacobi-preconditioned CG (runs/, solvers/) to relative residual `tolerance`.
+DamageLinearSolve cg_solve(double tolerance) { return damage_cg(tolerance, 100000); }
 
 /// A 2D block of particles, 2 × 2 per cell of dx over cells [i0, i1) × [0, rows),
 /// F = `F`, with `field` as every particle's phase-field point.

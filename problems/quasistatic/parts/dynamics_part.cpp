@@ -10,13 +10,6 @@
 namespace sinew {
 namespace {
 
-SceneKey ranged(SceneKey key, double lower, double upper)
-{
-    key.lower = lower;
-    key.upper = upper;
-    return key;
-}
-
 /// "dynamics": the scene is stepped in time (docs/dynamics.md); its inertia
 /// and damping terms join the potentials.
 class DynamicsPart final : public ScenePart {

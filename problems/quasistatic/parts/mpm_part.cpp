@@ -19,13 +19,6 @@ constexpr double kMaxSpeed = 1e8;  // m/s: anything beyond is a typo
 constexpr double kMaxTurnRate = 1e6;  // rad/s
 constexpr double kMaxSteps = 1e7;  // duration / time_step
 
-SceneKey ranged(SceneKey key, double lower, double upper)
-{
-    key.lower = lower;
-    key.upper = upper;
-    return key;
-}
-
 /// The particles' material, by name.
 struct MaterialEntry {
     int index = 0;

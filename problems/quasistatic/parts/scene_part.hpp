@@ -33,6 +33,14 @@ struct SceneKey {
     double upper = HUGE_VAL;
 };
 
+/// `key` with the closed range [lower, upper] that DeclaredKeys enforces.
+inline SceneKey ranged(SceneKey key, double lower, double upper)
+{
+    key.lower = lower;
+    key.upper = upper;
+    return key;
+}
+
 /// What the parts build together while a scene is read: the scene itself,
 /// and the pieces composed into its NLP once every part has been read.
 struct SceneAssembly {
