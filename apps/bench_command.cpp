@@ -1,5 +1,6 @@
 #include "cli_options.hpp"
 #include "commands.hpp"
+#include "anisompm_bench.hpp"
 #include "dynamics_bench.hpp"
 #include "mpm_bench.hpp"
 #include "reuse_bench.hpp"
@@ -44,6 +45,8 @@ const char* const kRigSuite = "rig";
 const char* const kDynamicsSuite = "dynamics";
 /// The suite of the material point method's steps (mpm_bench.hpp).
 const char* const kMpmSuite = "mpm";
+/// The suite of AnisoMPM's scenes (anisompm_bench.hpp).
+const char* const kAnisompmSuite = "anisompm";
 
 struct BenchFlags {
     std::string suite = "all";
@@ -312,7 +315,7 @@ void add_bench_command(CLI::App& app, int& exit_code)
                  "the published optimum f* (feasible, at f*, stopped on its own criterion; converged where there "
                  "is no f*), 3 otherwise");
     auto flags = std::make_shared<BenchFlags>();
-    command->add_option("--suite", flags->suite, "suite name (see sinew list), kernels, strategies, reuse, rig, mpm, or all")
+    command->add_option("--suite", flags->suite, "suite name (see sinew list), kernels, strategies, reuse, rig, mpm, anisompm, or all")
         ->capture_default_str();
     command->add_option("--output", flags->output,
                         "suite strategies: folder for each problem's comparison and the performance profiles")
@@ -352,12 +355,14 @@ void add_bench_command(CLI::App& app, int& exit_code)
         const bool reuse = flags->suite == kReuseSuite;
         const bool rig = flags->suite == kRigSuite;
         if (flags->suite != "all" && !kernels_only && !strategies && !reuse && !rig && flags->suite != kMpmSuite &&
+            flags->suite != kAnisompmSuite &&
             std::find(suites.begin(), suites.end(), flags->suite) == suites.end()) {
             std::string valid = "all";
             for (const auto& s : suites)
                 valid += ", " + s;
             throw InputError("unknown suite '" + flags->suite + "'; valid suites: " + valid + ", " + kKernelSuite +
-                             ", " + kStrategiesSuite + ", " + kReuseSuite + ", " + kRigSuite + ", " + kMpmSuite);
+                             ", " + kStrategiesSuite + ", " + kReuseSuite + ", " + kRigSuite + ", " + kMpmSuite + ", " +
+                             kAnisompmSuite);
         }
         if (rig)
             check_rig_strategies(flags->solvers, options);
@@ -385,6 +390,16 @@ void add_bench_command(CLI::App& app, int& exit_code)
                 throw InputError("suite mpm chooses its runs and the scenes' solvers; drop --solver and --problem");
             nlohmann::json runs = nlohmann::json::array();
             const bool converged = run_mpm_bench(options, runs);
+            if (!flags->json.empty())
+                write_text_file(flags->json, nlohmann::json{{"suite", flags->suite}, {"runs", runs}}.dump(2) + "\n");
+            exit_code = converged ? 0 : 3;
+            return;
+        }
+        if (flags->suite == kAnisompmSuite) {
+            if (!flags->solvers.empty() || !flags->problems.empty())
+                throw InputError("suite anisompm runs the scenes of scenes/anisompm as they are; drop --solver and --problem");
+            nlohmann::json runs = nlohmann::json::array();
+            const bool converged = run_anisompm_bench(options, runs);
             if (!flags->json.empty())
                 write_text_file(flags->json, nlohmann::json{{"suite", flags->suite}, {"runs", runs}}.dump(2) + "\n");
             exit_code = converged ? 0 : 3;

@@ -140,7 +140,9 @@ nlohmann::json to_json(const MpmFrameRow& row, bool damage)
             {"max_J", number(row.max_J)},
             {"cfl_time_step", number(row.cfl_time_step)},
             {"iterations", row.iterations},
-            {"time_s", row.time_s}};
+            {"time_s", row.time_s},
+            {"transfer_s", row.transfer_s},
+            {"momentum_s", row.momentum_s}};
     if (damage) {
         out["damage_s"] = row.damage_s;
         out["damage_cg_iterations"] = row.damage_cg_iterations;
@@ -337,7 +339,12 @@ private:
         if (scene_.stepping == MpmStepping::implicit_steps) {
             ++sub_steps_;
             const std::string failure = advance_damage(models, step.time_step);
-            return failure.empty() ? implicit_step(particles_, models, step, grid_, solves_.solve()).failure : failure;
+            if (!failure.empty())
+                return failure;
+            const auto start = std::chrono::steady_clock::now();
+            const std::string step_failure = implicit_step(particles_, models, step, grid_, solves_.solve()).failure;
+            step_times_.momentum_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            return step_failure;
         }
         const double bound = std::min(cfl_time_step(particles_, models, scene_.dx, scene_.cfl), damage_time_step());
         int parts = 1;
@@ -353,8 +360,12 @@ private:
             sub_step.time_step = part;
             ++sub_steps_;
             std::string failure = advance_damage(models, part);
-            if (failure.empty())
-                failure = explicit_step(particles_, models, sub_step, grid_).failure;
+            if (failure.empty()) {
+                const ExplicitStepReport report = explicit_step(particles_, models, sub_step, grid_);
+                step_times_.transfer_s += report.to_grid_s + report.to_particles_s;
+                step_times_.momentum_s += report.stress_s + report.grid_update_s;
+                failure = report.failure;
+            }
             if (!failure.empty())
                 return failure;
         }
@@ -374,6 +385,9 @@ private:
         row.damage_capped = damage_counts_.damage_capped;
         row.damage_decrease_refused = damage_counts_.damage_decrease_refused;
         damage_counts_ = MpmFrameRow{};
+        row.transfer_s = step_times_.transfer_s;
+        row.momentum_s = step_times_.momentum_s;
+        step_times_ = MpmFrameRow{};
         row.iterations = solves_.counts.iterations - iterations_recorded_;
         iterations_recorded_ = solves_.counts.iterations;
         row.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -463,6 +477,7 @@ private:
     DamageGrid<Dim> damage_grid_;
     DamageLinearSolve damage_solve_;
     MpmFrameRow damage_counts_;     ///< the damage fields only: since the last frame
+    MpmFrameRow step_times_;        ///< transfer_s and momentum_s only: since the last frame
     int damage_not_converged_ = 0;  ///< implicit damage solves that missed their tolerance
     long long taken_ = 0;      ///< steps of the scene's Δt taken
     long long sub_steps_ = 0;  ///< steps taken, sub-steps counted

@@ -26,6 +26,11 @@ struct MpmFrameRow {
     double cfl_time_step = 0.0;  ///< the explicit bound at this state (cfl · dx / max(c + |v|))
     int iterations = 0;          ///< implicit: solver iterations since the previous frame
     double time_s = 0.0;         ///< wall time since the run started
+    /// The steps since the previous frame, wall time: explicit steps split into
+    /// the transfers (P2G, G2P with advection) and the momentum update (stress
+    /// impulses, grid update); an implicit step's whole time is momentum_s.
+    double transfer_s = 0.0;
+    double momentum_s = 0.0;
     /// Damage (scene part "mpm_damage"), its updates since the previous frame:
     double damage_s = 0.0;                  ///< their wall time
     long long damage_cg_iterations = 0;     ///< implicit damage: iterations of the damage solves
