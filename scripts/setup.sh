@@ -18,6 +18,7 @@ packages=(
   libopenvdb-dev           # OpenVDB 10 (with oneTBB): level set collision bodies (.vdb, meshToLevelSet)
   python3                  # an independent XML parser for the VTU writer's test
   gnuplot-nox              # sinew compare's plots (PNG and SVG by its cairo terminals; no X)
+  python3-matplotlib       # scripts/plot_damage.py: an MPM run's damage field as a PNG (with numpy)
   libpetsc-real-dev        # PETSc 3.18 with OpenMPI and hypre: the petsc-* linear solvers
 )
 

@@ -341,3 +341,41 @@ TEST_CASE("sinew solve on a scene with dynamics writes a row per step, step VTUs
     CHECK(partial["converged"] == false);
     CHECK(partial["stopped"].get<std::string>().find("step 1 did not converge") != std::string::npos);
 }
+
+TEST_CASE("sinew solve on an mpm scene with damage reports it, and scripts/plot_damage.py draws it")
+{
+    // A small block pulled across its fibres for 0.1 s: enough stretch to damage.
+    const auto dir = std::filesystem::temp_directory_path() / ("sinew_plot_damage_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const std::string scene = (dir / "block.json").string();
+    std::ofstream(scene) << R"({"mpm": {"dimension": 2, "dx": 0.05,
+      "materials": [{"name": "tissue", "model": "qr-anisotropic", "parameters": {"mu": 40, "lambda": 80, "kx": 100}, "density": 2}],
+      "particles": [{"shape": "box", "lower": [0.3, 0.4], "upper": [0.7, 0.6], "material": "tissue", "fiber": [0, 1]}],
+      "colliders": [{"box": {"lower": [0.2, 0.3], "upper": [0.35, 0.7]}, "condition": "sticky", "velocity": [-1, 0], "thickness": 0},
+                    {"box": {"lower": [0.65, 0.3], "upper": [0.8, 0.7]}, "condition": "sticky", "velocity": [1, 0], "thickness": 0}],
+      "substeps": true, "time_step": 0.002, "duration": 0.1, "frames": 2},
+      "mpm_damage": {"materials": [{"name": "tissue", "stretch": 0.1, "eta": 0.01}]}})";
+    const std::string out = (dir / "out").string();
+    const Run run = run_sinew("solve '" + scene + "' --output '" + out + "'");
+    CAPTURE(run.err);
+    REQUIRE(run.exit_code == 0);
+    const nlohmann::json result = nlohmann::json::parse(slurp(out + "/result.json"));
+    CHECK(result.at("damage").at("integration") == "implicit");
+    CHECK(result.at("damage").at("solves_not_converged") == 0);
+    const nlohmann::json& last = result.at("frames").back();
+    CHECK(last.at("max_damage").get<double>() > 0.0);
+    CHECK(last.at("max_damage").get<double>() <= 1.0);
+    CHECK(last.at("damage_cg_iterations").get<long long>() > 0);
+    CHECK(slurp(out + "/frame_2.vtp").find("Name=\"damage_history\"") != std::string::npos);
+
+    const std::string script = std::string(SINEW_SOURCE_DIR) + "/scripts/plot_damage.py";
+    const std::string png = (dir / "damage.png").string();
+    CHECK(std::system(("/usr/bin/python3 '" + script + "' '" + out + "' --out '" + png + "' > /dev/null").c_str()) == 0);
+    const std::string image = slurp(png);
+    CHECK(image.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0);
+    // Not an mpm output folder: one line, exit code 2.
+    const int status = std::system(("/usr/bin/python3 '" + script + "' '" + dir.string() + "' 2> /dev/null").c_str());
+    CHECK(WEXITSTATUS(status) == 2);
+    std::filesystem::remove_all(dir);
+}

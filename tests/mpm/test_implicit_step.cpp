@@ -9,6 +9,7 @@
 #include "sinew/core/input_error.hpp"
 #include "sinew/core/threads.hpp"
 #include "sinew/energies/models/model_catalog.hpp"
+#include "sinew/energies/models/qr_anisotropic.hpp"
 #include "sinew/mpm/cfl.hpp"
 #include "sinew/mpm/explicit_step.hpp"
 #include "sinew/mpm/grid_velocity_nlp.hpp"
@@ -89,10 +90,17 @@ double total_energy(const Particles<Dim>& particles, const std::vector<const Con
 /// `regime`: Taylor test, central differences, and a PSD projected Hessian.
 template <int Dim>
 void check_grid_velocity_nlp(const std::vector<const ConstitutiveModel<Dim, Dim>*>& models, Regime regime,
-                             const std::optional<GridWalls<Dim>>& walls, std::mt19937& rng)
+                             const std::optional<GridWalls<Dim>>& walls, std::mt19937& rng, bool damaged = false)
 {
-    CAPTURE(models[0]->name(), Dim, regime_name(regime), walls.has_value());
-    const Particles<Dim> particles = deformed_block<Dim>(regime, rng);
+    CAPTURE(models[0]->name(), Dim, regime_name(regime), walls.has_value(), damaged);
+    Particles<Dim> particles = deformed_block<Dim>(regime, rng);
+    if (damaged) {  // d and the fibre random per particle (seed 004 §3.6: the degraded momentum)
+        std::uniform_real_distribution<double> u01(0.0, 1.0);
+        for (auto& point : particles.point) {
+            point.damage = u01(rng);
+            point.fiber = random_unit_vector<Dim>(rng);
+        }
+    }
     SparseGrid<Dim> grid(0.1);
     const ParticleBuckets<Dim> layout = particles_to_grid(particles, TransferSettings{}, grid);
     // Δt² μ /(ρ dx²) = 25: the elastic term outweighs inertia in the Hessian.
@@ -160,6 +168,23 @@ TEST_CASE("implicit MPM: the grid-velocity NLP passes the Taylor test and centra
 {
     check_grid_velocity_derivatives<3>("fixed-corotated", 13);
     check_grid_velocity_derivatives<3>("stable-neo-hookean", 14);
+}
+
+TEST_CASE("implicit MPM: the grid-velocity NLP of damaged qr-anisotropic particles passes the derivative checks")
+{
+    // The degraded model's ∂P/∂F jumps at J = 1 where d > 0 (g on the volume
+    // term for J ≥ 1 only), so the regimes here keep every J away from 1:
+    // stretched and compressed blocks; residual r = 0 and 0.1.
+    for (const double residual : {0.0, 0.1}) {
+        CAPTURE(residual);
+        const QrAnisotropic<2> plane(ParameterValues{{"mu", 1e5}, {"lambda", 2e5}, {"kx", 3e5}, {"residual", residual}});
+        const QrAnisotropic<3> volume(ParameterValues{{"mu", 1e5}, {"lambda", 2e5}, {"kx", 3e5}, {"residual", residual}});
+        std::mt19937 rng(31);
+        for (const Regime regime : {Regime::large_stretch, Regime::compression}) {
+            check_grid_velocity_nlp<2>({&plane}, regime, std::nullopt, rng, true);
+            check_grid_velocity_nlp<3>({&volume}, regime, std::nullopt, rng, true);
+        }
+    }
 }
 
 TEST_CASE("implicit MPM: F_p(v) of the NLP is the F the transfers and the advection give the particle")
