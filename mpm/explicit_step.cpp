@@ -79,7 +79,8 @@ void add_gravity(const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid)
 
 template <int Dim>
 ExplicitStepReport explicit_step(Particles<Dim>& particles, const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
-                                 const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid)
+                                 const MpmStepSettings<Dim>& settings, SparseGrid<Dim>& grid,
+                                 const GridInextensibility<Dim>* inextensibility)
 {
     for (int p = 0; p < particles.size(); ++p) {
         const int material = particles.material[static_cast<std::size_t>(p)];
@@ -103,16 +104,20 @@ ExplicitStepReport explicit_step(Particles<Dim>& particles, const std::vector<co
     const ParticleBuckets<Dim> layout = particles_to_grid(particles, settings.transfer, grid, &impulses);
     report.to_grid_s = lap();
     add_gravity(settings, grid);
+    if (inextensibility)
+        report.inextensibility = project_grid_velocities(particles, settings, *inextensibility, grid);
     apply_grid_conditions(settings, grid);
-    report.grid_update_s = lap();
+    report.grid_update_s = lap() - report.inextensibility.seconds;
     advect_particles(settings, grid, layout, particles);
     report.to_particles_s = lap();
     return report;
 }
 
 template ExplicitStepReport explicit_step<2>(Particles<2>&, const std::vector<const ConstitutiveModel<2, 2>*>&,
-                                             const MpmStepSettings<2>&, SparseGrid<2>&);
+                                             const MpmStepSettings<2>&, SparseGrid<2>&,
+                                             const GridInextensibility<2>*);
 template ExplicitStepReport explicit_step<3>(Particles<3>&, const std::vector<const ConstitutiveModel<3, 3>*>&,
-                                             const MpmStepSettings<3>&, SparseGrid<3>&);
+                                             const MpmStepSettings<3>&, SparseGrid<3>&,
+                                             const GridInextensibility<3>*);
 
 } // namespace sinew

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace sinew {
 namespace {
@@ -26,11 +27,26 @@ GridVelocityNlp<Dim>::GridVelocityNlp(const Particles<Dim>& particles,
                                       const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
                                       const SparseGrid<Dim>& grid, const ParticleBuckets<Dim>& layout,
                                       const MpmStepSettings<Dim>& settings)
-    : particles_(particles), models_(models), layout_(layout), time_step_(settings.time_step)
+    : GridVelocityNlp(particles, models,
+                      GridVelocityMap<Dim>(particles, grid, settings, GridVelocityMap<Dim>::Predictor::momentum_and_gravity),
+                      layout, settings.time_step)
+{
+}
+
+template <int Dim>
+GridVelocityNlp<Dim>::GridVelocityNlp(const Particles<Dim>& particles,
+                                      const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
+                                      GridVelocityMap<Dim> map, const ParticleBuckets<Dim>& layout, double time_step,
+                                      LinearVelocityRows rows)
+    : particles_(particles), models_(models), map_(std::move(map)), layout_(layout), time_step_(time_step),
+      rows_(std::move(rows)), variables_(map_.variables()), stencil_nodes_(map_.stencil_nodes())
 {
     if (static_cast<int>(layout.order.size()) != particles.size())
         throw std::invalid_argument("GridVelocityNlp: a layout of " + std::to_string(layout.order.size()) +
                                     " particles for " + std::to_string(particles.size()));
+    if (rows_.rows() > 0 && (rows_.B.cols() != variables_ || rows_.rhs.size() != rows_.B.rows()))
+        throw std::invalid_argument("GridVelocityNlp: constraint rows of " + std::to_string(rows_.B.cols()) +
+                                    " columns for " + std::to_string(variables_) + " unknowns");
     if (!(time_step_ > 0.0) || !std::isfinite(time_step_))
         throw InputError("the implicit MPM step needs a finite time step > 0, not " + std::to_string(time_step_));
     for (int p = 0; p < particles.size(); ++p) {
@@ -39,59 +55,13 @@ GridVelocityNlp<Dim>::GridVelocityNlp(const Particles<Dim>& particles,
             throw InputError("particle " + std::to_string(p) + " has material " + std::to_string(material) +
                              ", which has no model (" + std::to_string(models.size()) + " given)");
     }
-    build_nodes(grid, settings);
-    build_couplings(grid, settings.transfer.order);
-    build_pattern();
-}
-
-template <int Dim>
-void GridVelocityNlp<Dim>::build_nodes(const SparseGrid<Dim>& grid, const MpmStepSettings<Dim>& settings)
-{
-    for (int slot = 0; slot < grid.slots(); ++slot) {
-        const auto s = static_cast<std::size_t>(slot);
-        if (!(grid.mass[s] > 0.0))
-            continue;
-        const NodeVector target = grid.momentum[s] / grid.mass[s] + time_step_ * settings.gravity;  // v* = (m v)/m + Δt g
-        node_slot_.push_back(slot);
-        node_index_.push_back(grid.node(slot));
-        node_mass_.push_back(grid.mass[s]);
-        target_.push_back(target);
-        frames_.push_back(node_velocity_frame(node_contacts(settings, grid.position(slot), grid.dx()), target));
-        first_variable_.push_back(variables_);
-        variables_ += static_cast<int>(frames_.back().basis.cols());
-    }
-    velocities_.assign(node_slot_.size(), NodeVector::Zero());
-}
-
-template <int Dim>
-void GridVelocityNlp<Dim>::build_couplings(const SparseGrid<Dim>& grid, SplineOrder order)
-{
-    using Index = typename SparseGrid<Dim>::Index;
-    const int width = stencil_width(order);
-    stencil_nodes_ = power(width, Dim);
+    int width = 1;
+    while (power(width, Dim) < stencil_nodes_)
+        ++width;
     offset_width_ = 2 * width - 1;
-    std::vector<int> node_of_slot(static_cast<std::size_t>(grid.slots()), -1);
-    for (int k = 0; k < nodes(); ++k)
-        node_of_slot[static_cast<std::size_t>(slot(k))] = k;
-    const double dx = grid.dx();
-    const double inverse_D = 1.0 / (apic_inertia_factor(order) * dx * dx);  // D_p⁻¹ = (σ dx²)⁻¹ I
-    couplings_.assign(static_cast<std::size_t>(particles_.size()) * static_cast<std::size_t>(stencil_nodes_), {});
-    for (int p = 0; p < particles_.size(); ++p) {
-        const auto i = static_cast<std::size_t>(p);
-        const BSplineStencil<Dim> stencil = checked_stencil(particles_, p, dx, order);
-        std::size_t k = i * static_cast<std::size_t>(stencil_nodes_);
-        stencil.for_each_offset([&](const Index& offset) {
-            Coupling& coupling = couplings_[k++];
-            const Index node = stencil.base + offset;
-            const int found = grid.find(node);
-            if (found < 0 || node_of_slot[static_cast<std::size_t>(found)] < 0)
-                return;
-            coupling.node = node_of_slot[static_cast<std::size_t>(found)];
-            // q_ip = w_ip D⁻¹ (x_i − x_p),  b_ip = Fⁿᵀ q_ip
-            const NodeVector q = stencil.weight(offset) * inverse_D * (node.template cast<double>() * dx - particles_.x[i]);
-            coupling.b = particles_.F[i].transpose() * q;
-        });
-    }
+    velocities_.assign(static_cast<std::size_t>(nodes()), NodeVector::Zero());
+    build_pattern();
+    build_jacobian_pattern();
 }
 
 template <int Dim>
@@ -100,8 +70,7 @@ int GridVelocityNlp<Dim>::table_entry(int a, int b) const
     const int reach = (offset_width_ - 1) / 2;
     int linear = 0;
     for (int d = 0; d < Dim; ++d)
-        linear = linear * offset_width_ +
-                 (node_index_[static_cast<std::size_t>(b)][d] - node_index_[static_cast<std::size_t>(a)][d] + reach);
+        linear = linear * offset_width_ + (map_.index(b)[d] - map_.index(a)[d] + reach);
     return a * power(offset_width_, Dim) + linear;
 }
 
@@ -115,7 +84,7 @@ void GridVelocityNlp<Dim>::build_pattern()
     for (int a = 0; a < nodes(); ++a)
         partner[static_cast<std::size_t>(table_entry(a, a))] = a;
     for (int p = 0; p < particles_.size(); ++p) {
-        const Coupling* c = &couplings_[static_cast<std::size_t>(p) * static_cast<std::size_t>(stencil_nodes_)];
+        const Coupling* c = map_.couplings(p);
         for (int s = 0; s < stencil_nodes_; ++s)
             for (int t = 0; t < stencil_nodes_; ++t)
                 if (c[s].node >= 0 && c[t].node >= 0 && c[s].node > c[t].node)
@@ -130,8 +99,8 @@ void GridVelocityNlp<Dim>::build_pattern()
             if (b == kUnmarked || free_components(a) == 0 || free_components(b) == 0)
                 continue;
             block_table_[entry] = pattern_.nonzeros();
-            const int row0 = first_variable_[static_cast<std::size_t>(a)];
-            const int col0 = first_variable_[static_cast<std::size_t>(b)];
+            const int row0 = map_.first_variable(a);
+            const int col0 = map_.first_variable(b);
             for (int n = 0; n < free_components(a); ++n)
                 for (int m = 0; m < (a == b ? n + 1 : free_components(b)); ++m)
                     pattern_.add(row0 + n, col0 + m);
@@ -145,8 +114,8 @@ void GridVelocityNlp<Dim>::add_block(int a, int b, const Matrix& H_ab, VectorRef
     const int start = block_table_[static_cast<std::size_t>(table_entry(a, b))];
     if (start < 0)
         return;  // a node held at v_b: no unknowns
-    const auto& Ba = frames_[static_cast<std::size_t>(a)].basis;
-    const auto& Bb = frames_[static_cast<std::size_t>(b)].basis;
+    const auto& Ba = map_.frame(a).basis;
+    const auto& Bb = map_.frame(b).basis;
     // B_aᵀ H_ab B_b in storage of at most Dim × Dim on the stack: no heap
     // allocation for each of a particle's 27·28/2 blocks.
     using Reduced = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, Dim, Dim>;
@@ -161,24 +130,7 @@ void GridVelocityNlp<Dim>::add_block(int a, int b, const Matrix& H_ab, VectorRef
 template <int Dim>
 Eigen::VectorXd GridVelocityNlp<Dim>::starting_point() const
 {
-    Eigen::VectorXd y(num_variables());
-    for (int k = 0; k < nodes(); ++k) {
-        const auto i = static_cast<std::size_t>(k);
-        const NodeVelocityFrame<Dim>& frame = frames_[i];
-        if (frame.basis.cols() > 0)
-            y.segment(first_variable_[i], frame.basis.cols()) = frame.basis.transpose() * (target_[i] - frame.offset);
-    }
-    return y;
-}
-
-template <int Dim>
-typename GridVelocityNlp<Dim>::NodeVector GridVelocityNlp<Dim>::velocity(int node, ConstVectorRef y) const
-{
-    const auto i = static_cast<std::size_t>(node);
-    const NodeVelocityFrame<Dim>& frame = frames_[i];
-    if (frame.basis.cols() == 0)
-        return frame.offset;  // held at v_b (an empty B has no data to multiply)
-    return frame.offset + frame.basis * y.segment(first_variable_[i], frame.basis.cols());  // v = offset + B y
+    return map_.predictor();
 }
 
 template <int Dim>
@@ -193,7 +145,7 @@ typename GridVelocityNlp<Dim>::Matrix GridVelocityNlp<Dim>::deformation_at_veloc
 {
     const auto i = static_cast<std::size_t>(particle);
     Matrix F = particles_.F[i];
-    const Coupling* c = &couplings_[i * static_cast<std::size_t>(stencil_nodes_)];
+    const Coupling* c = map_.couplings(particle);
     for (int t = 0; t < stencil_nodes_; ++t)
         if (c[t].node >= 0)
             F += time_step_ * velocities_[static_cast<std::size_t>(c[t].node)] * c[t].b.transpose();  // F = Fⁿ + Δt Σ v_i b_ipᵀ
@@ -205,7 +157,7 @@ typename GridVelocityNlp<Dim>::Matrix GridVelocityNlp<Dim>::deformation(int part
 {
     const auto i = static_cast<std::size_t>(particle);
     Matrix F = particles_.F[i];
-    const Coupling* c = &couplings_[i * static_cast<std::size_t>(stencil_nodes_)];
+    const Coupling* c = map_.couplings(particle);
     for (int t = 0; t < stencil_nodes_; ++t)
         if (c[t].node >= 0)
             F += time_step_ * velocity(c[t].node, y) * c[t].b.transpose();
@@ -219,7 +171,7 @@ double GridVelocityNlp<Dim>::objective(ConstVectorRef y)
     double E = 0.0;
     for (int k = 0; k < nodes(); ++k) {
         const auto i = static_cast<std::size_t>(k);
-        E += 0.5 * node_mass_[i] * (velocities_[i] - target_[i]).squaredNorm();  // ½ m ‖v − v*‖²
+        E += 0.5 * map_.mass(k) * (velocities_[i] - map_.target(k)).squaredNorm();  // ½ m ‖v − v*‖²
     }
     for (int p = 0; p < particles_.size(); ++p) {
         const auto i = static_cast<std::size_t>(p);
@@ -236,10 +188,10 @@ template <int Dim>
 void GridVelocityNlp<Dim>::gradient(ConstVectorRef y, VectorRef grad)
 {
     update_velocities(y);
-    std::vector<NodeVector> gradient_v(node_slot_.size());
+    std::vector<NodeVector> gradient_v(static_cast<std::size_t>(nodes()));
     for (int k = 0; k < nodes(); ++k) {
         const auto i = static_cast<std::size_t>(k);
-        gradient_v[i] = node_mass_[i] * (velocities_[i] - target_[i]);  // m (v − v*)
+        gradient_v[i] = map_.mass(k) * (velocities_[i] - map_.target(k));  // m (v − v*)
     }
     for (int p = 0; p < particles_.size(); ++p) {
         const auto i = static_cast<std::size_t>(p);
@@ -248,15 +200,16 @@ void GridVelocityNlp<Dim>::gradient(ConstVectorRef y, VectorRef grad)
                                                                             particles_.point[i], &P, nullptr,
                                                                             Projection::none);
         const Matrix scaled = time_step_ * particles_.volume[i] * P;  // Δt V_p⁰ P
-        const Coupling* c = &couplings_[i * static_cast<std::size_t>(stencil_nodes_)];
+        const Coupling* c = map_.couplings(p);
         for (int t = 0; t < stencil_nodes_; ++t)
             if (c[t].node >= 0)
                 gradient_v[static_cast<std::size_t>(c[t].node)] += scaled * c[t].b;  // Δt V_p⁰ P b_ip
     }
     for (int k = 0; k < nodes(); ++k) {
         const auto i = static_cast<std::size_t>(k);
-        if (frames_[i].basis.cols() > 0)
-            grad.segment(first_variable_[i], frames_[i].basis.cols()) = frames_[i].basis.transpose() * gradient_v[i];  // Bᵀ ∂E/∂v
+        const auto& basis = map_.frame(k).basis;
+        if (basis.cols() > 0)
+            grad.segment(map_.first_variable(k), basis.cols()) = basis.transpose() * gradient_v[i];  // Bᵀ ∂E/∂v
     }
 }
 
@@ -267,7 +220,7 @@ void GridVelocityNlp<Dim>::assemble_hessian(ConstVectorRef y, double sigma, Proj
     update_velocities(y);
     values.setZero();
     for (int a = 0; a < nodes(); ++a)
-        add_block(a, a, sigma * node_mass_[static_cast<std::size_t>(a)] * Matrix::Identity(), values);  // m_i I
+        add_block(a, a, sigma * map_.mass(a) * Matrix::Identity(), values);  // m_i I
     // The buckets of one colour reach disjoint nodes, so their particles add
     // into disjoint blocks of the Hessian.
     for_each_bucket_by_colour(layout_, [&](const typename ParticleBuckets<Dim>::Bucket& bucket) {
@@ -288,7 +241,7 @@ void GridVelocityNlp<Dim>::add_particle_hessian(int p, double sigma, Projection 
     models_[static_cast<std::size_t>(particles_.material[i])]->evaluate(deformation_at_velocities(p), particles_.point[i],
                                                                         nullptr, &K, projection);
     const double scale = sigma * time_step_ * time_step_ * particles_.volume[i];  // σ Δt² V_p⁰
-    const Coupling* c = &couplings_[i * static_cast<std::size_t>(stencil_nodes_)];
+    const Coupling* c = map_.couplings(p);
     for (int t = 0; t < stencil_nodes_; ++t) {
         // (K J_t)(:, col) = Σ_l K(:, col + D l) b_t,l
         auto& KJ = lifted[static_cast<std::size_t>(t)];
@@ -309,6 +262,38 @@ void GridVelocityNlp<Dim>::add_particle_hessian(int p, double sigma, Projection 
             add_block(c[s].node, c[t].node, scale * H, values);
         }
     }
+}
+
+template <int Dim>
+void GridVelocityNlp<Dim>::build_jacobian_pattern()
+{
+    jacobian_pattern_ = SparsityPattern();
+    for (int r = 0; r < rows_.rows(); ++r)
+        for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(rows_.B, r); it; ++it)
+            jacobian_pattern_.add(r, static_cast<int>(it.col()));
+}
+
+template <int Dim>
+void GridVelocityNlp<Dim>::constraint_bounds(VectorRef lower, VectorRef upper) const
+{
+    lower = rows_.rhs;  // B y = rhs
+    upper = rows_.rhs;
+}
+
+template <int Dim>
+void GridVelocityNlp<Dim>::constraints(ConstVectorRef y, VectorRef c)
+{
+    c = rows_.B * y;
+}
+
+template <int Dim>
+void GridVelocityNlp<Dim>::jacobian_values(ConstVectorRef, VectorRef values)
+{
+    // ∂c/∂y = B, its entries row by row as in the pattern.
+    int k = 0;
+    for (int r = 0; r < rows_.rows(); ++r)
+        for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(rows_.B, r); it; ++it)
+            values[k++] = it.value();
 }
 
 template <int Dim>

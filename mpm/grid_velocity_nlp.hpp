@@ -1,6 +1,7 @@
 #pragma once
 #include "sinew/energies/models/constitutive_model.hpp"
-#include "sinew/mpm/node_velocity_frame.hpp"
+#include "sinew/mpm/grid_velocity_map.hpp"
+#include "sinew/mpm/linear_velocity_rows.hpp"
 #include "sinew/mpm/particle_buckets.hpp"
 #include "sinew/mpm/particles.hpp"
 #include "sinew/mpm/sparse_grid.hpp"
@@ -33,18 +34,28 @@ namespace sinew {
 /// hold moves in its NodeVelocityFrame, v_i = offset_i + B_i y_i (decided at
 /// v*), and the unknowns are the y_i, node after node in slot order (none
 /// for a node held at v_b). Derivatives in y: B_iᵀ ∂E/∂v_i and B_iᵀ (∂²E/∂v_i∂v_j) B_j.
+/// The nodes, frames and couplings are a GridVelocityMap. Optional linear
+/// equality rows B y = rhs (LinearVelocityRows: the grid inextensibility,
+/// seed 004 §4) make it a constrained NLP, with a constant Jacobian and no
+/// term in the Hessian; kkt-newton, relaxed-kkt, penalty, augmented-lagrangian
+/// and Ipopt take it then.
 /// Built after particles_to_grid, on the layout it returned; the particles,
 /// models, grid and layout must outlive it and stay unchanged. The Hessian
 /// is assembled on the layout's buckets, colour by colour (one result
 /// whatever the thread count, as the transfers).
 template <int Dim>
-class GridVelocityNlp final : public Nlp {
+class GridVelocityNlp : public Nlp {
 public:
     using NodeVector = Eigen::Matrix<double, Dim, 1>;
     using Matrix = Eigen::Matrix<double, Dim, Dim>;
 
+    /// Unconstrained, on the map of the implicit step's predictor.
     GridVelocityNlp(const Particles<Dim>& particles, const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
                     const SparseGrid<Dim>& grid, const ParticleBuckets<Dim>& layout, const MpmStepSettings<Dim>& settings);
+    /// On `map` (built on the same particles and grid), with the equality rows `rows` (in the map's unknowns).
+    GridVelocityNlp(const Particles<Dim>& particles, const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
+                    GridVelocityMap<Dim> map, const ParticleBuckets<Dim>& layout, double time_step,
+                    LinearVelocityRows rows = {});
 
     std::string name() const override { return "mpm-grid-velocities"; }
     int num_variables() const override { return variables_; }
@@ -54,13 +65,20 @@ public:
     void gradient(ConstVectorRef y, VectorRef grad) override;
     const SparsityPattern& hessian_pattern() const override { return pattern_; }
     bool supports(Projection) const override { return true; }
+    int num_constraints() const override { return rows_.rows(); }
+    void constraint_bounds(VectorRef lower, VectorRef upper) const override;
+    void constraints(ConstVectorRef y, VectorRef c) override;
+    const SparsityPattern& jacobian_pattern() const override { return jacobian_pattern_; }
+    void jacobian_values(ConstVectorRef y, VectorRef values) override;
 
+    const GridVelocityMap<Dim>& map() const { return map_; }
+    const LinearVelocityRows& rows() const { return rows_; }
     /// Nodes with mass.
-    int nodes() const { return static_cast<int>(node_slot_.size()); }
+    int nodes() const { return map_.nodes(); }
     /// The grid slot of node k.
-    int slot(int node) const { return node_slot_[static_cast<std::size_t>(node)]; }
+    int slot(int node) const { return map_.slot(node); }
     /// v_k = offset_k + B_k y_k, node k's velocity at y.
-    NodeVector velocity(int node, ConstVectorRef y) const;
+    NodeVector velocity(int node, ConstVectorRef y) const { return map_.velocity(node, y); }
     /// F_p at y, the particle's deformation gradient after a step there.
     Matrix deformation(int particle, ConstVectorRef y) const;
 
@@ -69,16 +87,11 @@ protected:
     void projected_hessian_values(ConstVectorRef y, double sigma, ConstVectorRef lambda, VectorRef values) override;
 
 private:
-    /// A node particle p reaches: its index among the nodes with mass (−1 without) and b_ip = F_pⁿᵀ q_ip.
-    struct Coupling {
-        int node = -1;
-        NodeVector b = NodeVector::Zero();
-    };
+    using Coupling = typename GridVelocityMap<Dim>::Coupling;
 
-    void build_nodes(const SparseGrid<Dim>& grid, const MpmStepSettings<Dim>& settings);
-    void build_couplings(const SparseGrid<Dim>& grid, SplineOrder order);
     void build_pattern();
-    int free_components(int node) const { return static_cast<int>(frames_[static_cast<std::size_t>(node)].basis.cols()); }
+    void build_jacobian_pattern();
+    int free_components(int node) const { return map_.free_components(node); }
     int table_entry(int a, int b) const;
     /// values += B_aᵀ H_ab B_b into the block of nodes a ≥ b (lower triangle only when a = b).
     void add_block(int a, int b, const Matrix& H_ab, VectorRef values) const;
@@ -92,23 +105,19 @@ private:
 
     const Particles<Dim>& particles_;
     const std::vector<const ConstitutiveModel<Dim, Dim>*>& models_;
+    GridVelocityMap<Dim> map_;
     const ParticleBuckets<Dim>& layout_;
     double time_step_;
+    LinearVelocityRows rows_;
     int variables_ = 0;
     int stencil_nodes_ = 0;  ///< nodes a particle reaches: width^Dim
     int offset_width_ = 0;   ///< 2·width − 1: node offsets two particles' stencils can span
-    std::vector<int> node_slot_;                                ///< node → grid slot
-    std::vector<typename SparseGrid<Dim>::Index> node_index_;   ///< node → grid index
-    std::vector<double> node_mass_;                             ///< m_i
-    std::vector<NodeVector> target_;                            ///< v*_i
-    std::vector<NodeVelocityFrame<Dim>> frames_;                ///< v_i = offset + B y_i
-    std::vector<int> first_variable_;                           ///< node → index of y_i's first entry
-    std::vector<NodeVector> velocities_;                        ///< scratch: v_i at the last y
-    std::vector<Coupling> couplings_;  ///< particle p's at [p·stencil_nodes, (p + 1)·stencil_nodes)
+    std::vector<NodeVector> velocities_;  ///< scratch: v_i at the last y
     /// Per node a and offset o of node b from a (offset_width^Dim of them):
     /// the first value of block (a, b) for b ≤ a, −1 where no particle couples them.
     std::vector<int> block_table_;
     SparsityPattern pattern_;
+    SparsityPattern jacobian_pattern_;  ///< rows_.B's entries, row by row
 };
 
 } // namespace sinew

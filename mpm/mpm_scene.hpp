@@ -1,6 +1,7 @@
 #pragma once
 #include "sinew/energies/models/constitutive_model.hpp"
 #include "sinew/mpm/damage/damage_update.hpp"
+#include "sinew/mpm/inextensibility/inextensibility_settings.hpp"
 #include "sinew/mpm/particles.hpp"
 #include "sinew/mpm/step_settings.hpp"
 
@@ -54,6 +55,9 @@ struct MpmScene {
     /// AnisoMPM's damage (scene part "mpm_damage"): when set, the particles
     /// carry phase-field points and d advances once before every step.
     std::optional<DamageSettings> damage;
+    /// AnisoMPM's fibre inextensibility on the grid (scene part
+    /// "mpm_inextensibility"): the materials it holds and how.
+    std::optional<InextensibilitySettings> inextensibility;
 };
 
 } // namespace sinew

@@ -1,10 +1,10 @@
 #include "sinew/runs/comparison_subjects.hpp"
 
 #include "sinew/core/format_number.hpp"
-#include "sinew/core/input_error.hpp"
 #include "sinew/mesh/mesh.hpp"
 #include "sinew/problems/quasistatic/builtin_scenes.hpp"
 #include "sinew/problems/quasistatic/constraint_ranks.hpp"
+#include "sinew/runs/mpm_comparison.hpp"
 #include "sinew/runs/scene_runner.hpp"
 #include "sinew/solvers/solver.hpp"
 
@@ -13,6 +13,8 @@ namespace sinew {
 ComparisonSubject scene_subject(const std::function<Scene()>& make_scene, const SceneRunRequest& request)
 {
     const Scene first = make_scene();
+    if (first.mpm)
+        return mpm_subject(make_scene);
     ComparisonSubject subject;
     subject.name = first.name;
     subject.size = first.size;
@@ -20,8 +22,6 @@ ComparisonSubject scene_subject(const std::function<Scene()>& make_scene, const 
     subject.make_nlp = [make_scene]() -> std::unique_ptr<Nlp> { return std::move(make_scene().problem); };
     subject.run = [make_scene, request](const ComparedStrategy& strategy, const SolverOptions& options) {
         Scene scene = make_scene();
-        if (scene.mpm)
-            throw InputError("'" + scene.name + "' is an mpm scene; compare takes scenes with a mesh (run it with sinew solve)");
         SceneRunRequest run_request = request;
         run_request.solver = strategy.solver;
         run_request.options = options;

@@ -9,7 +9,7 @@
 
 namespace sinew {
 
-/// A scene to compare strategies on, built afresh by `make_scene` for every
+/// A scene to compare strategies on (an mpm scene: mpm_subject), built afresh by `make_scene` for every
 /// run (a solve moves a scene's load factor and state). Each run goes
 /// through the scene runner with `request` (its tolerance, iteration limit
 /// and load steps; the strategy's solver and options replace its own),

@@ -12,9 +12,11 @@
 #include "sinew/mpm/explicit_step.hpp"
 #include "sinew/mpm/grid_velocity_nlp.hpp"
 #include "sinew/mpm/implicit_step.hpp"
+#include "sinew/mpm/inextensibility/fiber_drift.hpp"
+#include "sinew/mpm/inextensibility/inextensibility_rows.hpp"
 #include "sinew/mpm/particle_buckets.hpp"
 #include "sinew/mpm/particle_measures.hpp"
-#include "sinew/runs/damage_cg.hpp"
+#include "sinew/runs/jacobi_cg.hpp"
 #include "sinew/runs/output_file.hpp"
 #include "sinew/runs/result_json.hpp"
 #include "sinew/runs/scene_run_settings.hpp"
@@ -28,6 +30,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <optional>
+#include <utility>
 
 namespace sinew {
 namespace {
@@ -82,7 +86,7 @@ VtuArrays grid_arrays(const SparseGrid<Dim>& grid, const ActiveGrid<Dim>& active
 }
 
 template <int Dim>
-VtuArrays particle_arrays(const MpmSetup<Dim>& setup, const Particles<Dim>& particles)
+VtuArrays particle_arrays(const MpmScene& scene, const MpmSetup<Dim>& setup, const Particles<Dim>& particles)
 {
     const auto count = static_cast<Eigen::Index>(particles.size());
     Eigen::MatrixXd velocity(Dim, count), fiber(Dim, count), J(1, count), stress(1, count), material(1, count),
@@ -107,6 +111,16 @@ VtuArrays particle_arrays(const MpmSetup<Dim>& setup, const Particles<Dim>& part
             history(0, p) = particles.phase_field[static_cast<std::size_t>(p)].history;
         arrays["damage_history"] = history;
     }
+    if (scene.inextensibility) {  // a₀ᵀ C a₀ − 1, and which particles carry the constraint
+        Eigen::MatrixXd stretch(1, count), inextensible(1, count);
+        for (Eigen::Index p = 0; p < count; ++p) {
+            const auto i = static_cast<std::size_t>(p);
+            stretch(0, p) = (particles.F[i] * particles.point[i].fiber).squaredNorm() - 1.0;
+            inextensible(0, p) = scene.inextensibility->carries(particles.material[i]) ? 1.0 : 0.0;
+        }
+        arrays["fiber_stretch"] = stretch;
+        arrays["inextensible"] = inextensible;
+    }
     return arrays;
 }
 
@@ -126,7 +140,7 @@ Eigen::MatrixXd positions_of(const std::vector<Eigen::Vector3d>& x)
     return out;
 }
 
-nlohmann::json to_json(const MpmFrameRow& row, bool damage)
+nlohmann::json to_json(const MpmFrameRow& row, bool damage, bool inextensibility)
 {
     nlohmann::json out = {{"frame", row.frame},
             {"time", row.time},
@@ -151,6 +165,13 @@ nlohmann::json to_json(const MpmFrameRow& row, bool damage)
         out["damage_decrease_refused"] = row.damage_decrease_refused;
         out["max_damage"] = number(row.max_damage);
         out["mean_damage"] = number(row.mean_damage);
+    }
+    if (inextensibility) {
+        out["inextensibility_s"] = row.inextensibility_s;
+        out["inextensibility_cg_iterations"] = row.inextensibility_cg_iterations;
+        out["constraint_violation"] = number(row.constraint_violation);
+        out["fiber_drift_max"] = number(row.fiber_drift_max);
+        out["fiber_drift_rms"] = number(row.fiber_drift_rms);
     }
     return out;
 }
@@ -210,7 +231,11 @@ public:
           particles_(setup_.particles), grid_(scene.dx), solves_{settings, Result{}, 0}, damage_grid_(scene.dx)
     {
         if (scene.damage)
-            damage_solve_ = damage_cg(scene.damage->cg_tolerance, scene.damage->cg_max_iterations);
+            damage_solve_ = jacobi_cg(scene.damage->cg_tolerance, scene.damage->cg_max_iterations);
+        if (scene.inextensibility)
+            inextensibility_ = GridInextensibility<Dim>{*scene.inextensibility,
+                                                        jacobi_cg(scene.inextensibility->cg_tolerance,
+                                                                  scene.inextensibility->cg_max_iterations)};
         sort_particles_by_block(particles_, scene.dx, setup_.step.transfer.order);  // the run's numbering from frame 0
         for (const GridCollider<Dim>& collider : setup_.step.colliders)
             moving_.push_back(std::make_shared<PlacedBody>(*collider.body));
@@ -233,7 +258,12 @@ public:
             SparseGrid<Dim> grid(scene_.dx);
             const ParticleBuckets<Dim> layout = particles_to_grid(particles_, setup_.step.transfer, grid);
             const auto models = setup_.model_pointers();
-            GridVelocityNlp<Dim> nlp(particles_, models, grid, layout, step_settings());
+            const MpmStepSettings<Dim> step = step_settings();
+            GridVelocityMap<Dim> map(particles_, grid, step, GridVelocityMap<Dim>::Predictor::momentum_and_gravity);
+            LinearVelocityRows rows;
+            if (inextensibility_ && inextensibility_->settings.method == InextensibilityMethod::nlp)
+                rows = independent_rows(inextensibility_rows(particles_, map, scene_.dx, inextensibility_->settings));
+            GridVelocityNlp<Dim> nlp(particles_, models, std::move(map), layout, step.time_step, std::move(rows));
             check_solve(nlp, settings_.solver, settings_.options);
         }
     }
@@ -251,11 +281,16 @@ public:
             record(frame, taken_, outcome, on_frame, start);
         }
         outcome.steps = sub_steps_;
-        const bool solved = solves_.not_converged == 0 && damage_not_converged_ == 0;
+        outcome.positions.resize(Dim * particles_.size());
+        for (int p = 0; p < particles_.size(); ++p)
+            outcome.positions.segment<Dim>(Dim * p) = particles_.x[static_cast<std::size_t>(p)];
+        const bool solved = solves_.not_converged == 0 && damage_not_converged_ == 0 && projections_not_converged_ == 0;
         if (outcome.stopped.empty() && solves_.not_converged > 0)
             outcome.stopped = std::to_string(solves_.not_converged) + " implicit solves did not converge";
         if (outcome.stopped.empty() && damage_not_converged_ > 0)
             outcome.stopped = std::to_string(damage_not_converged_) + " damage solves did not converge";
+        if (outcome.stopped.empty() && projections_not_converged_ > 0)
+            outcome.stopped = std::to_string(projections_not_converged_) + " inextensibility projections did not converge";
         outcome.converged = outcome.stopped.empty();
         outcome.run.solver = scene_.stepping == MpmStepping::implicit_steps ? settings_.solver : "explicit";
         outcome.run.problem = "mpm";
@@ -330,6 +365,25 @@ private:
         return step;
     }
 
+    const GridInextensibility<Dim>* inextensibility() const { return inextensibility_ ? &*inextensibility_ : nullptr; }
+
+    /// A step's inextensibility into the frame's counts, then the drift
+    /// correction by projection (the other corrections act inside the rows).
+    void after_step(const InextensibilityStepReport& report)
+    {
+        if (!inextensibility_)
+            return;
+        const auto start = std::chrono::steady_clock::now();
+        if (inextensibility_->settings.correction == FiberDriftCorrection::projection)
+            project_fiber_lengths(particles_, inextensibility_->settings);
+        inextensibility_counts_.inextensibility_s +=
+            report.seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        inextensibility_counts_.inextensibility_cg_iterations += report.cg_iterations;
+        inextensibility_counts_.constraint_violation =
+            std::max(inextensibility_counts_.constraint_violation, report.violation);
+        projections_not_converged_ += report.converged ? 0 : 1;
+    }
+
     /// One step of the scene's Δt; why the run must end, or "".
     std::string step()
     {
@@ -342,9 +396,11 @@ private:
             if (!failure.empty())
                 return failure;
             const auto start = std::chrono::steady_clock::now();
-            const std::string step_failure = implicit_step(particles_, models, step, grid_, solves_.solve()).failure;
-            step_times_.momentum_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            return step_failure;
+            const ImplicitStepReport report = implicit_step(particles_, models, step, grid_, solves_.solve(), inextensibility());
+            step_times_.momentum_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() -
+                                      report.inextensibility.seconds;
+            after_step(report.inextensibility);
+            return report.failure;
         }
         const double bound = std::min(cfl_time_step(particles_, models, scene_.dx, scene_.cfl), damage_time_step());
         int parts = 1;
@@ -361,9 +417,11 @@ private:
             ++sub_steps_;
             std::string failure = advance_damage(models, part);
             if (failure.empty()) {
-                const ExplicitStepReport report = explicit_step(particles_, models, sub_step, grid_);
+                const ExplicitStepReport report = explicit_step(particles_, models, sub_step, grid_, inextensibility());
                 step_times_.transfer_s += report.to_grid_s + report.to_particles_s;
                 step_times_.momentum_s += report.stress_s + report.grid_update_s;
+                if (report.failure.empty())
+                    after_step(report.inextensibility);
                 failure = report.failure;
             }
             if (!failure.empty())
@@ -385,6 +443,15 @@ private:
         row.damage_capped = damage_counts_.damage_capped;
         row.damage_decrease_refused = damage_counts_.damage_decrease_refused;
         damage_counts_ = MpmFrameRow{};
+        if (inextensibility_) {
+            row.inextensibility_s = inextensibility_counts_.inextensibility_s;
+            row.inextensibility_cg_iterations = inextensibility_counts_.inextensibility_cg_iterations;
+            row.constraint_violation = inextensibility_counts_.constraint_violation;
+            inextensibility_counts_ = MpmFrameRow{};
+            const FiberDrift drift = fiber_drift(particles_, inextensibility_->settings);
+            row.fiber_drift_max = drift.max;
+            row.fiber_drift_rms = drift.rms;
+        }
         row.transfer_s = step_times_.transfer_s;
         row.momentum_s = step_times_.momentum_s;
         step_times_ = MpmFrameRow{};
@@ -394,7 +461,7 @@ private:
         outcome.frames.push_back(row);
         if (!folder_.empty() && settings_.vtu != VtuOutput::none) {
             const std::string name = "frame_" + std::to_string(frame) + ".vtp";
-            write_vtp(folder_ + name, positions_of(particles_.x), particle_arrays(setup_, particles_), settings_.encoding);
+            write_vtp(folder_ + name, positions_of(particles_.x), particle_arrays(scene_, setup_, particles_), settings_.encoding);
             collection_.push_back({row.time, name});
             if (scene_.grid_output)
                 write_grid(frame, row.time);
@@ -420,7 +487,7 @@ private:
             return;
         nlohmann::json frames = nlohmann::json::array(), files = nlohmann::json::array();
         for (const MpmFrameRow& row : outcome.frames)
-            frames.push_back(to_json(row, scene_.damage.has_value()));
+            frames.push_back(to_json(row, scene_.damage.has_value(), scene_.inextensibility.has_value()));
         for (const PvdEntry& entry : collection_)
             files.push_back(entry.file);
         if (!collection_.empty())
@@ -465,6 +532,24 @@ private:
             }
             result["damage"] = summary;
         }
+        if (scene_.inextensibility) {
+            const InextensibilitySettings& inextensible = *scene_.inextensibility;
+            nlohmann::json materials = nlohmann::json::array();
+            for (std::size_t k = 0; k < scene_.materials.size(); ++k)
+                if (inextensible.carries(static_cast<int>(k)))
+                    materials.push_back(scene_.materials[k]);
+            const bool schur = inextensible.method == InextensibilityMethod::schur_cg;
+            nlohmann::json summary = {
+                {"materials", materials},
+                {"method", schur ? "schur-cg" : "nlp"},
+                {"drift_correction", inextensible.correction == FiberDriftCorrection::projection ? "projection" : "none"},
+                {"projections_not_converged", projections_not_converged_}};
+            if (schur) {
+                summary["cg_tolerance"] = inextensible.cg_tolerance;
+                summary["cg_max_iterations"] = inextensible.cg_max_iterations;
+            }
+            result["inextensibility"] = summary;
+        }
         write_text_file(folder_ + "result.json", result.dump(2) + "\n");
     }
 
@@ -475,10 +560,13 @@ private:
     SparseGrid<Dim> grid_;
     ImplicitSolves solves_;
     DamageGrid<Dim> damage_grid_;
-    DamageLinearSolve damage_solve_;
+    SpdSolve damage_solve_;
     MpmFrameRow damage_counts_;     ///< the damage fields only: since the last frame
     MpmFrameRow step_times_;        ///< transfer_s and momentum_s only: since the last frame
     int damage_not_converged_ = 0;  ///< implicit damage solves that missed their tolerance
+    std::optional<GridInextensibility<Dim>> inextensibility_;
+    MpmFrameRow inextensibility_counts_;  ///< the inextensibility fields only: since the last frame
+    int projections_not_converged_ = 0;   ///< Schur solves that missed their tolerance
     long long taken_ = 0;      ///< steps of the scene's Δt taken
     long long sub_steps_ = 0;  ///< steps taken, sub-steps counted
     int iterations_recorded_ = 0;

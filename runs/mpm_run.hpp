@@ -40,6 +40,13 @@ struct MpmFrameRow {
     /// and the field at the frame:
     double max_damage = 0.0;
     double mean_damage = 0.0;  ///< Σ V⁰ d / Σ V⁰
+    /// Inextensibility (scene part "mpm_inextensibility"), its steps since the previous frame:
+    double inextensibility_s = 0.0;                ///< wall time of the rows and projections
+    long long inextensibility_cg_iterations = 0;   ///< schur-cg: iterations of the Schur solves
+    double constraint_violation = 0.0;             ///< the largest ‖B y − rhs‖∞ of a step (1/s)
+    /// and the positional constraint at the frame (fiber_drift):
+    double fiber_drift_max = 0.0;  ///< max |a₀ᵀ C a₀ − 1| over the inextensible particles
+    double fiber_drift_rms = 0.0;
 };
 
 struct MpmRunOutcome {
@@ -47,6 +54,7 @@ struct MpmRunOutcome {
     std::string stopped;     ///< why the run ended early or did not converge ("" when it did)
     std::vector<MpmFrameRow> frames;  ///< frame 0 (t = 0) first
     long long steps = 0;
+    Eigen::VectorXd positions;  ///< the particles' x at the end, particle after particle (the run's order)
     /// The run as one result (for --json): status, message, iterations and
     /// time summed over the steps; x is empty.
     Result run;
@@ -73,6 +81,10 @@ void check_mpm_run(const MpmScene& scene, const SceneRunSettings& settings);
 /// included; explicit damage also bounds the step (explicit_damage_time_step:
 /// sub-steps when the scene allows them, else refused before the run); a
 /// damage solve that does not converge is counted as an implicit solve is.
+/// With inextensibility (MpmScene::inextensibility) every step takes its
+/// rows (schur-cg: projected, counted as a solve when the CG misses its
+/// tolerance; nlp: the implicit solve's constraints), and its drift
+/// correction follows each step.
 MpmRunOutcome run_mpm(const MpmScene& scene, const SceneRunSettings& settings,
                       const std::function<void(const MpmFrameRow&)>& on_frame = {});
 

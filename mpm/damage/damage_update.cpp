@@ -10,7 +10,7 @@ namespace sinew {
 template <int Dim>
 DamageReport update_damage(Particles<Dim>& particles, const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
                            double dt, const DamageSettings& settings, DamageGrid<Dim>& grid,
-                           const DamageLinearSolve& solve)
+                           const SpdSolve& solve)
 {
     if (settings.integration == DamageIntegration::explicit_damage)
         return explicit_damage(particles, models, dt, grid);
@@ -29,9 +29,9 @@ double explicit_damage_time_step(const Particles<Dim>& particles, double dx)
 }
 
 template DamageReport update_damage<2>(Particles<2>&, const std::vector<const ConstitutiveModel<2, 2>*>&, double,
-                                       const DamageSettings&, DamageGrid<2>&, const DamageLinearSolve&);
+                                       const DamageSettings&, DamageGrid<2>&, const SpdSolve&);
 template DamageReport update_damage<3>(Particles<3>&, const std::vector<const ConstitutiveModel<3, 3>*>&, double,
-                                       const DamageSettings&, DamageGrid<3>&, const DamageLinearSolve&);
+                                       const DamageSettings&, DamageGrid<3>&, const SpdSolve&);
 template double explicit_damage_time_step<2>(const Particles<2>&, double);
 template double explicit_damage_time_step<3>(const Particles<3>&, double);
 

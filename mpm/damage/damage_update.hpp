@@ -20,7 +20,7 @@ struct DamageSettings {
     DamageIntegration integration = DamageIntegration::implicit_damage;
     ImplicitDamageSettings implicit;  ///< implicit: preconditioner and grid-to-particle transfer
     /// implicit: the damage solve's relative residual and iteration cap, for
-    /// the DamageLinearSolve the layer above binds (mpm/ has no solver).
+    /// the SpdSolve the layer above binds (mpm/ has no solver).
     double cg_tolerance = 1e-8;
     int cg_max_iterations = 1000;
 };
@@ -34,7 +34,7 @@ struct DamageSettings {
 template <int Dim>
 DamageReport update_damage(Particles<Dim>& particles, const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
                            double dt, const DamageSettings& settings, DamageGrid<Dim>& grid,
-                           const DamageLinearSolve& solve);
+                           const SpdSolve& solve);
 
 /// The largest Δt of a stable explicit damage update: min over particles of
 /// 2η/(1 + l₀² · 4 Dim/dx²). Explicit damage is forward Euler of

@@ -40,7 +40,7 @@ void damage_to_particles(Particles<Dim>& particles, const DamageGrid<Dim>& grid,
 template <int Dim>
 Eigen::VectorXd solve_damage_system(const DamageSystem<Dim>& system, const DamageGrid<Dim>& grid,
                                     const std::vector<int>& held, DamagePreconditioner preconditioner,
-                                    const DamageLinearSolve& solve, DamageSolveOutcome& outcome)
+                                    const SpdSolve& solve, SpdSolveOutcome& outcome)
 {
     const int n = system.size();
     Eigen::VectorXd free = Eigen::VectorXd::Zero(n), fixed = Eigen::VectorXd::Zero(n);
@@ -69,7 +69,7 @@ Eigen::VectorXd solve_damage_system(const DamageSystem<Dim>& system, const Damag
 template <int Dim>
 DamageReport implicit_damage(Particles<Dim>& particles, const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
                              double dt, const ImplicitDamageSettings& settings, DamageGrid<Dim>& grid,
-                             const DamageLinearSolve& solve)
+                             const SpdSolve& solve)
 {
     DamageReport report;
     std::vector<double> driving;
@@ -78,7 +78,7 @@ DamageReport implicit_damage(Particles<Dim>& particles, const std::vector<const 
         return report;
     const Eigen::VectorXd before = Eigen::Map<const Eigen::VectorXd>(grid.damage.data(), grid.nodes.slots());
     const DamageSystem<Dim> system(particles, driving, dt, grid);
-    DamageSolveOutcome outcome;
+    SpdSolveOutcome outcome;
     const Eigen::VectorXd after = solve_damage_system(system, grid, {}, settings.preconditioner, solve, outcome);
     report.cg_iterations = outcome.iterations;
     report.cg_residual = outcome.relative_residual;
@@ -89,12 +89,12 @@ DamageReport implicit_damage(Particles<Dim>& particles, const std::vector<const 
 }
 
 template Eigen::VectorXd solve_damage_system<2>(const DamageSystem<2>&, const DamageGrid<2>&, const std::vector<int>&,
-                                                DamagePreconditioner, const DamageLinearSolve&, DamageSolveOutcome&);
+                                                DamagePreconditioner, const SpdSolve&, SpdSolveOutcome&);
 template Eigen::VectorXd solve_damage_system<3>(const DamageSystem<3>&, const DamageGrid<3>&, const std::vector<int>&,
-                                                DamagePreconditioner, const DamageLinearSolve&, DamageSolveOutcome&);
+                                                DamagePreconditioner, const SpdSolve&, SpdSolveOutcome&);
 template DamageReport implicit_damage<2>(Particles<2>&, const std::vector<const ConstitutiveModel<2, 2>*>&, double,
-                                         const ImplicitDamageSettings&, DamageGrid<2>&, const DamageLinearSolve&);
+                                         const ImplicitDamageSettings&, DamageGrid<2>&, const SpdSolve&);
 template DamageReport implicit_damage<3>(Particles<3>&, const std::vector<const ConstitutiveModel<3, 3>*>&, double,
-                                         const ImplicitDamageSettings&, DamageGrid<3>&, const DamageLinearSolve&);
+                                         const ImplicitDamageSettings&, DamageGrid<3>&, const SpdSolve&);
 
 } // namespace sinew

@@ -5,6 +5,7 @@
 #include "sinew/mpm/damage/damage_report.hpp"
 #include "sinew/mpm/damage/damage_system.hpp"
 #include "sinew/mpm/particles.hpp"
+#include "sinew/mpm/spd_solve.hpp"
 
 #include <Eigen/Core>
 
@@ -12,20 +13,6 @@
 #include <vector>
 
 namespace sinew {
-
-struct DamageSolveOutcome {
-    bool converged = false;
-    int iterations = 0;
-    double relative_residual = 1.0;  ///< ‖b − S x‖ / ‖b‖
-};
-
-/// A solver of S x = b, S symmetric positive definite given by its product
-/// `multiply(v, S v)`, with the Jacobi preconditioner of `diagonal`. The
-/// layers above mpm/ bind it (runs/ and the tests: solvers/'s
-/// preconditioned_cg), so that mpm/ knows nothing of solvers/.
-using DamageLinearSolve = std::function<DamageSolveOutcome(
-    const std::function<void(const Eigen::VectorXd&, Eigen::VectorXd&)>& multiply, const Eigen::VectorXd& diagonal,
-    const Eigen::VectorXd& b, Eigen::VectorXd& x)>;
 
 /// The Jacobi preconditioner's diagonal: the seed's, A's lumped diagonal
 /// alone, or diag(A + B).
@@ -48,7 +35,7 @@ struct ImplicitDamageSettings {
 template <int Dim>
 Eigen::VectorXd solve_damage_system(const DamageSystem<Dim>& system, const DamageGrid<Dim>& grid,
                                     const std::vector<int>& held, DamagePreconditioner preconditioner,
-                                    const DamageLinearSolve& solve, DamageSolveOutcome& outcome);
+                                    const SpdSolve& solve, SpdSolveOutcome& outcome);
 
 /// One implicit damage update, before the step's momentum reads d: D̃_p
 /// (update_driving_forces), dⁿ to the grid (damage_to_grid), the system and
@@ -59,6 +46,6 @@ Eigen::VectorXd solve_damage_system(const DamageSystem<Dim>& system, const Damag
 template <int Dim>
 DamageReport implicit_damage(Particles<Dim>& particles, const std::vector<const ConstitutiveModel<Dim, Dim>*>& models,
                              double dt, const ImplicitDamageSettings& settings, DamageGrid<Dim>& grid,
-                             const DamageLinearSolve& solve);
+                             const SpdSolve& solve);
 
 } // namespace sinew

@@ -60,6 +60,9 @@ Scene parse_scene(const std::string& text, const std::string& document, const st
         read_mesh_free_parts(root, parts, assembly);
         return scene;
     }
+    for (const auto& part : parts)
+        if (part->needs_mpm() && root.has(part->key()))
+            root.at(part->key()).fail("acts on the particles of an \"mpm\" section, which the scene lacks");
     for (const auto& part : parts) {
         if (auto value = root.find(part->key()))
             part->read(*value, assembly);

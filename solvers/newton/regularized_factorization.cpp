@@ -93,7 +93,13 @@ bool RegularizedFactorization::factorize_with_inertia(
         schedule.last_delta_w = 0.0;
         return true;
     }
-    const double delta_c = singular() ? schedule.delta_c : 0.0;
+    // δc once K is singular, or has fewer than m negative eigenvalues: with J
+    // of full row rank K has at least m (whatever H), so fewer say that J is
+    // rank-deficient up to round-off (a zero pivot that came out positive),
+    // which no δw can cure.
+    const FactorizationAttempt& first = attempts_.back();
+    const bool deficient = first.status == LinearStatus::ok && first.inertia.negative < m;
+    const double delta_c = singular() || deficient ? schedule.delta_c : 0.0;
     double delta_w = schedule.last_delta_w == 0.0
                          ? schedule.first_delta_w
                          : std::max(schedule.min_delta_w, schedule.decrease * schedule.last_delta_w);

@@ -61,7 +61,8 @@ public:
     /// Symmetric indefinite KKT systems [H + δw I, Jᵀ; J, −δc I]: `assemble`
     /// fills K for (δw, δc); accepted when the inertia is (n, m, 0).
     /// Ipopt's schedule: δw = 0 first; then κw⁻·(last δw) or δ̄w⁰; then
-    /// ×κw⁺ (×κ̄w⁺ while no δw was needed before); δc > 0 once K is singular,
+    /// ×κw⁺ (×κ̄w⁺ while no δw was needed before); δc > 0 once K is singular
+    /// or has fewer than m negative eigenvalues (J rank-deficient up to round-off),
     /// dropped again when the accepted δw alone gives the inertia (the
     /// singularity was H's, not J's). attempts().back() is the factorization in use.
     /// Needs a solver that reports inertia. False past δ̄w_max.

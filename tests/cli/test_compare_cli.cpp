@@ -5,7 +5,10 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
+#include <string>
+#include <vector>
 
 using sinew::test::read_json;
 using sinew::test::run_sinew;
@@ -119,4 +122,51 @@ TEST_CASE("sinew compare on the locking block ends every strategy with an honest
         CHECK(r["result"]["status"] != "converged");
         CHECK_FALSE(r["result"]["message"].get<std::string>().empty());
     }
+}
+
+TEST_CASE("sinew compare on an implicit mpm scene puts every strategy and the seed's Schur-CG in one table")
+{
+    // The pendulum of scenes/anisompm at dx = 0.02, its first frame (20 steps).
+    const std::string scene = scratch("compare_pendulum") + ".json";
+    std::ofstream(scene) << R"({"mpm": {"dimension": 2, "dx": 0.02, "gravity": [0, -9.81],
+      "materials": [{"name": "rope", "model": "stable-neo-hookean", "parameters": {"mu": 100, "lambda": 200}, "density": 200},
+                    {"name": "bob", "model": "stable-neo-hookean", "parameters": {"mu": 1e4, "lambda": 2e4}, "density": 1000}],
+      "particles": [{"shape": "box", "lower": [0.48, 0.45], "upper": [0.52, 0.9], "material": "rope", "fiber": [0, 1]},
+                    {"shape": "ball", "center": [0.5, 0.4], "radius": 0.05, "material": "bob", "velocity": [1.0, 0]}],
+      "colliders": [{"name": "hook", "box": {"lower": [0.4, 0.87], "upper": [0.6, 0.95]}, "condition": "sticky", "thickness": 0}],
+      "stepping": "implicit", "time_step": 0.001, "duration": 0.2, "frames": 10},
+      "mpm_inextensibility": {"materials": ["rope"], "method": "nlp", "drift_correction": "projection"}})";
+    const std::string folder = scratch("compare_pendulum_out");
+    const auto run = run_sinew("compare '" + scene + "' --solvers ipopt,kkt-newton,relaxed-kkt,projected-newton "
+                               "--no-plots --quiet --output '" + folder + "'");
+    REQUIRE(run.exit_code == 0);
+    const nlohmann::json compare = read_json(folder + "/compare.json");
+    CHECK(compare["reference"] == "ipopt");
+    std::map<std::string, nlohmann::json> runs;
+    std::vector<double> relaxed_violations;
+    for (const auto& r : compare["runs"]) {
+        runs[r["strategy"].get<std::string>()] = r;
+        if (r["strategy"].get<std::string>().rfind("relaxed-kkt", 0) == 0)
+            relaxed_violations.push_back(r["result"]["constraint_violation"].get<double>());
+    }
+    REQUIRE(runs.count("ipopt"));
+    REQUIRE(runs.count("kkt-newton"));
+    REQUIRE(runs.count("schur-cg (seed)"));
+    CHECK(runs["ipopt"]["result"]["constraint_violation"].get<double>() < 1e-8);
+    // kkt-newton solves the same constrained steps: the same particles at the end.
+    CHECK(runs["kkt-newton"]["reference_distance"].get<double>() < 1e-6);
+    // The seed's split (an unconstrained step, then the projection) meets B v = 0
+    // too, but lands elsewhere: a different method, not a tolerance.
+    CHECK(runs["schur-cg (seed)"]["result"]["status"] == "converged");
+    CHECK(runs["schur-cg (seed)"]["result"]["constraint_violation"].get<double>() < 1e-6);
+    CHECK(runs["schur-cg (seed)"]["reference_distance"].get<double>() > 1e-6);
+    // relaxed-kkt misses the rows by less at every larger κ.
+    REQUIRE(relaxed_violations.size() == 3);
+    CHECK(relaxed_violations[1] < 0.1 * relaxed_violations[0]);
+    CHECK(relaxed_violations[2] < 0.1 * relaxed_violations[1]);
+    // An explicit mpm scene has no constrained NLP to compare on.
+    const auto refused = run_sinew("compare '" + std::string(SINEW_SOURCE_DIR) +
+                                   "/scenes/anisompm/pendulum-rope-explicit.json' --quiet --output '" + folder + "2'");
+    CHECK(refused.exit_code == 2);
+    CHECK(refused.err.find("needs implicit steps and \"mpm_inextensibility\"") != std::string::npos);
 }

@@ -5,7 +5,7 @@
 #include "sinew/mpm/damage/driving_force.hpp"
 #include "sinew/mpm/damage/explicit_damage.hpp"
 #include "sinew/mpm/damage/implicit_damage.hpp"
-#include "sinew/runs/damage_cg.hpp"
+#include "sinew/runs/jacobi_cg.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -19,7 +19,7 @@ using namespace sinew;
 namespace {
 
 /// Jacobi-preconditioned CG (runs/, solvers/) to relative residual `tolerance`.
-DamageLinearSolve cg_solve(double tolerance) { return damage_cg(tolerance, 100000); }
+SpdSolve cg_solve(double tolerance) { return jacobi_cg(tolerance, 100000); }
 
 /// A 2D block of particles, 2 × 2 per cell of dx over cells [i0, i1) × [0, rows),
 /// F = `F`, with `field` as every particle's phase-field point.
@@ -61,7 +61,7 @@ double profile_error(double l0, double dx)
     for (int slot = 0; slot < grid.nodes.slots(); ++slot)
         if (std::abs(grid.nodes.node(slot)[0]) <= 1 && grid.weight[static_cast<std::size_t>(slot)] > 0.0)
             crack.push_back(slot);
-    DamageSolveOutcome outcome;
+    SpdSolveOutcome outcome;
     const Eigen::VectorXd d =
         solve_damage_system(system, grid, crack, DamagePreconditioner::full_diagonal, cg_solve(1e-13), outcome);
     REQUIRE(outcome.converged);
@@ -223,7 +223,7 @@ TEST_CASE("damage: the two preconditioners solve the same system", "[mpm][damage
     for (std::size_t q = 0; q < driving.size(); ++q)
         driving[q] = 0.5 + 0.5 * std::sin(static_cast<double>(q));
     const DamageSystem<2> system(particles, driving, 0.5, grid);
-    DamageSolveOutcome lumped, full;
+    SpdSolveOutcome lumped, full;
     const Eigen::VectorXd a = solve_damage_system(system, grid, {}, DamagePreconditioner::lumped, cg_solve(1e-13), lumped);
     const Eigen::VectorXd b =
         solve_damage_system(system, grid, {}, DamagePreconditioner::full_diagonal, cg_solve(1e-13), full);

@@ -6,7 +6,7 @@
 #include "sinew/mpm/damage/driving_force.hpp"
 #include "sinew/mpm/explicit_step.hpp"
 #include "sinew/problems/quasistatic/scene_reader.hpp"
-#include "sinew/runs/damage_cg.hpp"
+#include "sinew/runs/jacobi_cg.hpp"
 #include "sinew/runs/mpm_run.hpp"
 #include "sinew/runs/scene_run_settings.hpp"
 
@@ -135,7 +135,7 @@ TEST_CASE("mpm_damage: needs the mpm section, and explicit damage refuses a step
 {
     const std::string mesh_scene = R"({"mesh": {"generator": "box", "lower": [0, 0, 0], "upper": [1, 1, 1], "cells": [1, 1, 1]},
         "materials": [{"model": "qr-anisotropic"}], "mpm_damage": {"materials": []}})";
-    CHECK_THAT(input_error(mesh_scene), Catch::Contains("mpm_damage: needs the scene's \"mpm\" section"));
+    CHECK_THAT(input_error(mesh_scene), Catch::Contains("mpm_damage: acts on the particles of an \"mpm\" section"));
     // η = 1e-4 s, l₀ = dx/2: the bound 2η/(1 + 4·2·¼) = 6.7e-5 s is below the step of 1e-3 s.
     const std::string fast = R"({"integration": "explicit", "materials": [{"name": "tissue", "stretch": 0.35, "eta": 1e-4}]})";
     CHECK_THAT(input_error(two_materials(fast)), Catch::Contains("exceeds the explicit damage's stability bound"));
@@ -182,7 +182,7 @@ TEST_CASE("explicit damage: stable below its time-step bound, unstable well abov
         settings.integration = DamageIntegration::explicit_damage;
         double largest = 0.0;
         for (int k = 0; k < steps; ++k)
-            update_damage(copy, models, dt, settings, grid, damage_cg(1e-10, 1000));
+            update_damage(copy, models, dt, settings, grid, jacobi_cg(1e-10, 1000));
         for (const auto& point : copy.point)
             largest = std::max(largest, point.damage);
         return largest;

@@ -43,6 +43,7 @@ public:
     }
     std::string kind() const override { return "run"; }
     bool mesh_free() const override { return true; }
+    bool needs_mpm() const override { return true; }
     int stage() const override { return 36; }
     std::vector<SceneKey> keys() const override
     {
@@ -66,8 +67,6 @@ public:
     {
         const DeclaredKeys declared(keys());
         declared.expect_object(value);
-        if (!assembly.scene.mpm)
-            value.fail("needs the scene's \"mpm\" section (damage acts on its particles)");
         auto scene = std::make_shared<MpmScene>(*assembly.scene.mpm);
         scene->damage = read_settings(value, declared);
         if (scene->dimension == 2)
@@ -78,35 +77,23 @@ public:
     }
 
 private:
-    static std::string choice(const JsonCursor& v, std::initializer_list<const char*> valid)
-    {
-        const std::string text = v.string();
-        std::string list;
-        for (const char* option : valid) {
-            if (text == option)
-                return text;
-            list += (list.empty() ? "" : ", ") + std::string(option);
-        }
-        v.fail("unknown value '" + text + "'; valid: " + list);
-    }
-
     static DamageSettings read_settings(const JsonCursor& value, const DeclaredKeys& declared)
     {
         DamageSettings settings;
         if (auto v = value.find("integration"))
-            settings.integration = choice(*v, {"explicit", "implicit"}) == "explicit" ? DamageIntegration::explicit_damage
+            settings.integration = read_choice(*v, {"explicit", "implicit"}) == "explicit" ? DamageIntegration::explicit_damage
                                                                                       : DamageIntegration::implicit_damage;
         const bool implicit = settings.integration == DamageIntegration::implicit_damage;
         for (const char* key : {"preconditioner", "transfer", "cg_tolerance", "cg_max_iterations"})
             if (!implicit && value.has(key))
                 value.at(key).fail("is for \"integration\": \"implicit\"");
         if (auto v = value.find("preconditioner"))
-            settings.implicit.preconditioner = choice(*v, {"lumped", "full_diagonal"}) == "lumped"
+            settings.implicit.preconditioner = read_choice(*v, {"lumped", "full_diagonal"}) == "lumped"
                                                    ? DamagePreconditioner::lumped
                                                    : DamagePreconditioner::full_diagonal;
         if (auto v = value.find("transfer"))
             settings.implicit.transfer =
-                choice(*v, {"increment", "seed"}) == "seed" ? DamageTransfer::seed : DamageTransfer::increment;
+                read_choice(*v, {"increment", "seed"}) == "seed" ? DamageTransfer::seed : DamageTransfer::increment;
         if (auto v = value.find("cg_tolerance"))
             settings.cg_tolerance = declared.number(*v, "cg_tolerance");
         if (auto v = value.find("cg_max_iterations"))
@@ -132,7 +119,7 @@ private:
             const JsonCursor o = list[i];
             declared.expect_object(o, "materials[]");
             const JsonCursor name = o.at("name");
-            const int material = material_index(name, scene.materials);
+            const int material = mpm_material_index(name, scene.materials);
             if (!seen.emplace(name.string(), material).second)
                 name.fail("a second entry for material '" + name.string() + "'");
             const ConstitutiveModel<Dim, Dim>& model = *setup.models[static_cast<std::size_t>(material)];
@@ -142,17 +129,6 @@ private:
                 if (particles.material[p] == material)
                     particles.phase_field[p] = entry.point_of(model, particles.point[p]);
         }
-    }
-
-    static int material_index(const JsonCursor& name, const std::vector<std::string>& materials)
-    {
-        for (std::size_t k = 0; k < materials.size(); ++k)
-            if (materials[k] == name.string())
-                return static_cast<int>(k);
-        std::string list;
-        for (const std::string& m : materials)
-            list += (list.empty() ? "" : ", ") + m;
-        name.fail("no mpm material called '" + name.string() + "'; materials: " + list);
     }
 
     /// Damage must change something: ψ at a stretch differs between d = 0 and d = 1.

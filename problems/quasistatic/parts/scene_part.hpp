@@ -83,6 +83,9 @@ public:
     /// Whether the part applies to a scene without a mesh (an "mpm" scene):
     /// its name, description, run settings and the "mpm" section itself.
     virtual bool mesh_free() const { return false; }
+    /// Whether the part acts on the particles of an "mpm" section, and so
+    /// means nothing in a scene without one (damage, inextensibility).
+    virtual bool needs_mpm() const { return false; }
     /// Parts are read by increasing stage, after the parts whose pieces they
     /// use: the mesh (10), materials (20), potentials (30…), boundary
     /// conditions (40…), constraint sets (50), run settings (60…). Each part

@@ -142,4 +142,27 @@ PrescribedMotion prescribed_motion(const JsonCursor& b, int dimension)
     return out;
 }
 
+std::string read_choice(const JsonCursor& v, std::initializer_list<const char*> valid)
+{
+    const std::string text = v.string();
+    std::string list;
+    for (const char* option : valid) {
+        if (text == option)
+            return text;
+        list += (list.empty() ? "" : ", ") + std::string(option);
+    }
+    v.fail("unknown value '" + text + "'; valid: " + list);
+}
+
+int mpm_material_index(const JsonCursor& name, const std::vector<std::string>& materials)
+{
+    for (std::size_t k = 0; k < materials.size(); ++k)
+        if (materials[k] == name.string())
+            return static_cast<int>(k);
+    std::string list;
+    for (const std::string& m : materials)
+        list += (list.empty() ? "" : ", ") + m;
+    name.fail("no mpm material called '" + name.string() + "'; materials: " + list);
+}
+
 } // namespace sinew

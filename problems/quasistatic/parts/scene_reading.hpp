@@ -10,6 +10,7 @@
 #include "sinew/problems/quasistatic/strict_json.hpp"
 #include "sinew/time/keyframe_curve.hpp"
 
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,12 @@ FaceShape face_shape(const JsonCursor& o);
 /// converted, 3D), "plane" ({point, normal}), "sphere" ({center, radius}) or "box" ({lower, upper}),
 /// as "bodies" and the colliders of "mpm" give it (docs/contact.md).
 std::shared_ptr<const CollisionBody> read_body(const JsonCursor& o, int dimension, const std::string& base_folder);
+
+/// The string at `v`, which must be one of `valid`; an error listing them otherwise.
+std::string read_choice(const JsonCursor& v, std::initializer_list<const char*> valid);
+
+/// The index of the mpm material called by the string at `name`; an error listing the materials otherwise.
+int mpm_material_index(const JsonCursor& name, const std::vector<std::string>& materials);
 
 /// The index of the mesh group called `name`; an error at `where` listing the groups otherwise.
 int group_index(const JsonCursor& where, const Mesh& mesh, const std::string& name);

@@ -1,10 +1,10 @@
-#include "sinew/runs/damage_cg.hpp"
+#include "sinew/runs/jacobi_cg.hpp"
 
 #include "sinew/solvers/newton/preconditioned_cg.hpp"
 
 namespace sinew {
 
-DamageLinearSolve damage_cg(double tolerance, int max_iterations)
+SpdSolve jacobi_cg(double tolerance, int max_iterations)
 {
     return [tolerance, max_iterations](const std::function<void(const Eigen::VectorXd&, Eigen::VectorXd&)>& multiply,
                                        const Eigen::VectorXd& diagonal, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
@@ -13,7 +13,7 @@ DamageLinearSolve damage_cg(double tolerance, int max_iterations)
             return true;
         };
         const CgOutcome outcome = preconditioned_cg(multiply, jacobi, b, tolerance, max_iterations, x);
-        return DamageSolveOutcome{outcome.status == CgStatus::converged, outcome.iterations, outcome.relative_residual};
+        return SpdSolveOutcome{outcome.status == CgStatus::converged, outcome.iterations, outcome.relative_residual};
     };
 }
 
