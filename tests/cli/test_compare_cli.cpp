@@ -141,7 +141,10 @@ TEST_CASE("sinew compare on an implicit mpm scene puts every strategy and the se
                                "--no-plots --quiet --output '" + folder + "'");
     REQUIRE(run.exit_code == 0);
     const nlohmann::json compare = read_json(folder + "/compare.json");
-    CHECK(compare["reference"] == "ipopt");
+    // The reference is kkt-newton's run when all its steps converged (it may
+    // stop on round-off in one, as a different build's rounding decides), else Ipopt's.
+    const std::string reference = compare["reference"].get<std::string>();
+    REQUIRE((reference == "kkt-newton" || reference == "ipopt"));
     std::map<std::string, nlohmann::json> runs;
     std::vector<double> relaxed_violations;
     for (const auto& r : compare["runs"]) {
@@ -153,8 +156,8 @@ TEST_CASE("sinew compare on an implicit mpm scene puts every strategy and the se
     REQUIRE(runs.count("kkt-newton"));
     REQUIRE(runs.count("schur-cg (seed)"));
     CHECK(runs["ipopt"]["result"]["constraint_violation"].get<double>() < 1e-8);
-    // kkt-newton solves the same constrained steps: the same particles at the end.
-    CHECK(runs["kkt-newton"]["reference_distance"].get<double>() < 1e-6);
+    // kkt-newton and Ipopt solve the same constrained steps: the same particles at the end.
+    CHECK(runs[reference == "ipopt" ? "kkt-newton" : "ipopt"]["reference_distance"].get<double>() < 1e-6);
     // The seed's split (an unconstrained step, then the projection) meets B v = 0
     // too, but lands elsewhere: a different method, not a tolerance.
     CHECK(runs["schur-cg (seed)"]["result"]["status"] == "converged");
